@@ -1,0 +1,21 @@
+# Every third-party package comes from Debian 12 (scripts/setup.sh installs them).
+find_package(Threads REQUIRED)
+find_package(glm CONFIG REQUIRED)
+find_package(nlohmann_json 3.10 CONFIG REQUIRED)
+find_package(tinyobjloader CONFIG REQUIRED)
+find_package(CLI11 CONFIG REQUIRED)
+find_package(OpenImageIO CONFIG REQUIRED)
+
+# Debian's OpenImageIO config names /usr/include/opencv4 as an include directory,
+# which does not exist unless OpenCV's headers are installed: drop it.
+foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+  get_target_property(dirs OpenImageIO::OpenImageIO ${prop})
+  if(dirs)
+    list(FILTER dirs EXCLUDE REGEX "opencv4")
+    set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${prop} "${dirs}")
+  endif()
+endforeach()
+
+if(RTVIEW_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()

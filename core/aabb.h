@@ -1,0 +1,61 @@
+#pragma once
+// Axis-aligned bounding box: the tutorial's "object extents".
+
+#include <algorithm>
+
+#include <glm/common.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "core/ray.h"
+
+namespace rt {
+
+struct Aabb {
+    vec3 lo{kInfinity};
+    vec3 hi{-kInfinity};
+
+    bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
+    void grow(const vec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    void grow(const Aabb& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
+    vec3 centre() const { return 0.5f * (lo + hi); }
+    vec3 extent() const { return hi - lo; }
+    float half_area() const {
+        const vec3 e = extent();
+        return empty() ? 0.0f : e.x * e.y + e.y * e.z + e.z * e.x;
+    }
+    // The box that holds this box after the affine transform m.
+    Aabb transformed(const glm::mat4& m) const;
+};
+
+inline Aabb Aabb::transformed(const glm::mat4& m) const {
+    Aabb out;
+    if (empty()) return out;
+    for (int corner = 0; corner < 8; ++corner) {
+        const vec3 p{(corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                     (corner & 4) ? hi.z : lo.z};
+        out.grow(vec3(m * glm::vec4(p, 1.0f)));
+    }
+    return out;
+}
+
+// Slab test against a precomputed reciprocal direction; returns the entry distance or
+// +inf when the ray misses the box within (0, t_max).
+inline float slab_entry(const Aabb& box, const vec3& origin, const vec3& inv_dir, float t_max) {
+    const vec3 t0 = (box.lo - origin) * inv_dir;
+    const vec3 t1 = (box.hi - origin) * inv_dir;
+    const vec3 t_near = glm::min(t0, t1);
+    const vec3 t_far = glm::max(t0, t1);
+    const float enter = std::max({t_near.x, t_near.y, t_near.z, 0.0f});
+    // The factor makes the far bound conservative against rounding (Ize, "Robust BVH
+    // Ray Traversal", 2013): a ray that grazes a box edge is not lost.
+    const float leave = std::min({t_far.x, t_far.y, t_far.z, t_max}) * 1.00000024f;
+    return enter <= leave ? enter : kInfinity;
+}
+
+}  // namespace rt

@@ -1,0 +1,35 @@
+#pragma once
+// What traversal records about the closest hit; the full surface record is built once,
+// after the search ("find the closest hit first, then build the hit record").
+
+#include <cstdint>
+#include <limits>
+
+#include "core/ray.h"
+
+namespace rt {
+
+inline constexpr std::uint32_t kNoObject = std::numeric_limits<std::uint32_t>::max();
+
+struct Hit {
+    float t = kInfinity;
+    std::uint32_t object = kNoObject;
+    std::uint32_t prim = 0;  // triangle index within a mesh
+    float b1 = 0.0f;         // barycentrics of a triangle hit
+    float b2 = 0.0f;
+
+    bool found() const { return object != kNoObject; }
+};
+
+// The surface at a hit, in world space. Normals face the incoming ray; front_face tells
+// whether the ray met the outward side (refraction needs to know if it enters or leaves).
+struct SurfacePoint {
+    vec3 p{0.0f};
+    vec3 geometric_normal{0.0f, 1.0f, 0.0f};
+    vec3 normal{0.0f, 1.0f, 0.0f};  // shading normal
+    bool front_face = true;
+    std::uint32_t material = 0;
+    vec3 pattern_point{0.0f};  // where a checker is evaluated (object space)
+};
+
+}  // namespace rt

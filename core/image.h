@@ -1,0 +1,37 @@
+#pragma once
+// Linear float RGB, stored bottom row first like OpenGL; flipped once when written.
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "core/ray.h"
+
+namespace rt {
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<vec3> pixels;  // row-major, row 0 at the bottom
+
+    Image() = default;
+    Image(int w, int h) : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, vec3(0.0f)) {}
+
+    vec3& at(int x, int y) { return pixels[static_cast<std::size_t>(y) * width + x]; }
+    const vec3& at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
+};
+
+// The sRGB transfer function (IEC 61966-2-1), on [0, 1]; values outside are clamped.
+float srgb_encode(float linear);
+float srgb_decode(float encoded);
+// 8-bit sRGB, top row first: what a PNG holds.
+std::vector<std::uint8_t> to_srgb8(const Image& image);
+
+// Writes .png (8-bit sRGB) or .exr (linear half float); throws rt::Error on failure.
+void write_image(const Image& image, const std::filesystem::path& path);
+// Reads any format OpenImageIO knows into linear RGB (8-bit files are taken as sRGB).
+Image read_image(const std::filesystem::path& path);
+bool is_supported_output(const std::filesystem::path& path);
+
+}  // namespace rt

@@ -1,0 +1,70 @@
+// The only file of core that touches OpenImageIO.
+#include <OpenImageIO/imageio.h>
+
+#include "core/error.h"
+#include "core/image.h"
+
+namespace rt {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+}  // namespace
+
+bool is_supported_output(const std::filesystem::path& path) {
+    const std::string ext = lower_extension(path);
+    return ext == ".png" || ext == ".exr";
+}
+
+void write_image(const Image& image, const std::filesystem::path& path) {
+    const std::string file = path.string();
+    if (!is_supported_output(path)) throw Error(file, "output", "unsupported format; use .png or .exr");
+    auto out = OIIO::ImageOutput::create(file);
+    if (!out) throw Error(file, "output", OIIO::geterror());
+
+    bool ok = false;
+    if (lower_extension(path) == ".png") {
+        const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+        const std::vector<std::uint8_t> bytes = to_srgb8(image);
+        ok = out->open(file, spec) && out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+    } else {
+        OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::HALF);
+        spec.attribute("oiio:ColorSpace", "Linear");
+        // Bottom row first in memory: hand OIIO the last row and a negative row stride.
+        const auto row = static_cast<OIIO::stride_t>(sizeof(vec3)) * image.width;
+        const auto* last_row = reinterpret_cast<const float*>(image.pixels.data()) +
+                               static_cast<std::size_t>(image.height - 1) * image.width * 3;
+        ok = out->open(file, spec) &&
+             out->write_image(OIIO::TypeDesc::FLOAT, last_row, sizeof(vec3), -row);
+    }
+    if (!ok) throw Error(file, "output", out->geterror());
+    if (!out->close()) throw Error(file, "output", out->geterror());
+}
+
+Image read_image(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    auto in = OIIO::ImageInput::open(file);
+    if (!in) throw Error(file, "input", OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<float> data(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data.data()))
+        throw Error(file, "input", in->geterror());
+    const bool encoded = spec.format.basetype == OIIO::TypeDesc::UINT8;
+    Image image(spec.width, spec.height);
+    for (int y = 0; y < spec.height; ++y) {
+        for (int x = 0; x < spec.width; ++x) {
+            const float* px = &data[(static_cast<std::size_t>(y) * spec.width + x) * spec.nchannels];
+            vec3 c;
+            for (int k = 0; k < 3; ++k) c[k] = px[std::min(k, spec.nchannels - 1)];
+            image.at(x, spec.height - 1 - y) =
+                encoded ? vec3(srgb_decode(c.x), srgb_decode(c.y), srgb_decode(c.z)) : c;
+        }
+    }
+    return image;
+}
+
+}  // namespace rt

@@ -1,0 +1,106 @@
+#include "core/mesh.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "core/shapes.h"
+
+namespace rt {
+
+void TriangleMesh::build() {
+    bounds_ = Aabb{};
+    std::vector<Aabb> boxes(triangles.size());
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+        for (int k = 0; k < 3; ++k) boxes[i].grow(positions[triangles[i][k]]);
+        bounds_.grow(boxes[i]);
+    }
+    bvh_.build(boxes);
+}
+
+Aabb bounds_of(const TriangleMesh& mesh) {
+    Aabb box;
+    for (const glm::uvec3& tri : mesh.triangles)
+        for (int k = 0; k < 3; ++k) box.grow(mesh.positions[tri[k]]);
+    return box;
+}
+
+std::size_t TriangleMesh::memory_bytes() const {
+    return positions.size() * sizeof(vec3) + triangles.size() * sizeof(glm::uvec3) +
+           corner_normals.size() * sizeof(vec3) + materials.size() * sizeof(std::uint32_t) +
+           bvh_.memory_bytes();
+}
+
+bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
+    return bvh_.traverse<false>(r, hit.t, [&](std::uint32_t tri, float& t_max) {
+        const glm::uvec3 idx = triangles[tri];
+        const auto h = intersect_triangle(positions[idx[0]], positions[idx[1]], positions[idx[2]], r, t_max);
+        if (!h) return false;
+        t_max = h->t;
+        hit.prim = tri;
+        hit.b1 = h->b1;
+        hit.b2 = h->b2;
+        return true;
+    });
+}
+
+bool TriangleMesh::occluded(const Ray& r, float t_max) const {
+    return bvh_.traverse<true>(r, t_max, [&](std::uint32_t tri, float& t_limit) {
+        const glm::uvec3 idx = triangles[tri];
+        return intersect_triangle(positions[idx[0]], positions[idx[1]], positions[idx[2]], r, t_limit)
+            .has_value();
+    });
+}
+
+vec3 TriangleMesh::face_normal(std::uint32_t tri) const {
+    const glm::uvec3 idx = triangles[tri];
+    return glm::cross(positions[idx[1]] - positions[idx[0]], positions[idx[2]] - positions[idx[0]]);
+}
+
+vec3 TriangleMesh::shading_normal(const Hit& hit) const {
+    if (corner_normals.empty()) return face_normal(hit.prim);
+    const vec3* n = &corner_normals[3 * std::size_t{hit.prim}];
+    return (1.0f - hit.b1 - hit.b2) * n[0] + hit.b1 * n[1] + hit.b2 * n[2];
+}
+
+vec3 TriangleMesh::point(const Hit& hit) const {
+    const glm::uvec3 idx = triangles[hit.prim];
+    return (1.0f - hit.b1 - hit.b2) * positions[idx[0]] + hit.b1 * positions[idx[1]] +
+           hit.b2 * positions[idx[2]];
+}
+
+void compute_corner_normals(TriangleMesh& mesh, float crease_degrees) {
+    const std::size_t tri_count = mesh.triangles.size();
+    std::vector<vec3> face(tri_count);
+    for (std::size_t t = 0; t < tri_count; ++t) face[t] = mesh.face_normal(static_cast<std::uint32_t>(t));
+
+    // Faces around each vertex, as a compressed adjacency list.
+    std::vector<std::uint32_t> start(mesh.positions.size() + 1, 0);
+    for (const auto& tri : mesh.triangles)
+        for (int k = 0; k < 3; ++k) ++start[tri[k] + 1];
+    for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    std::vector<std::uint32_t> faces_at(start.back());
+    for (std::uint32_t t = 0; t < tri_count; ++t)
+        for (int k = 0; k < 3; ++k) faces_at[fill[mesh.triangles[t][k]]++] = t;
+
+    const float cos_crease = std::cos(crease_degrees * 3.14159265f / 180.0f);
+    mesh.corner_normals.assign(3 * tri_count, vec3(0.0f));
+    for (std::uint32_t t = 0; t < tri_count; ++t) {
+        const float len = glm::length(face[t]);
+        const vec3 own = len > 0.0f ? face[t] / len : vec3(0.0f);
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t v = mesh.triangles[t][k];
+            vec3 sum(0.0f);
+            for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
+                const vec3& other = face[faces_at[i]];  // length = 2 x area: area weighting
+                const float other_len = glm::length(other);
+                if (other_len > 0.0f && glm::dot(own, other) >= cos_crease * other_len) sum += other;
+            }
+            const float sum_len = glm::length(sum);
+            mesh.corner_normals[3 * t + k] = sum_len > 0.0f ? sum / sum_len : own;
+        }
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,50 @@
+#pragma once
+// A triangle mesh with its own BVH; objects refer to it by index, so one mesh can be
+// instanced many times under different transforms.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/bvh.h"
+#include "core/hit.h"
+
+namespace rt {
+
+struct TriangleMesh {
+    std::string name;
+    std::vector<vec3> positions;
+    std::vector<glm::uvec3> triangles;     // indices into positions
+    std::vector<vec3> corner_normals;      // 3 per triangle (smooth shading); empty: flat
+    std::vector<std::uint32_t> materials;  // per triangle, scene material index; may be empty
+
+    // Bounds and BVH; call after filling the arrays.
+    void build();
+    const Aabb& bounds() const { return bounds_; }
+    std::size_t memory_bytes() const;
+
+    // Closest hit in (0, hit.t): fills t, prim, b1, b2 and returns true.
+    bool intersect(const Ray& r, Hit& hit) const;
+    bool occluded(const Ray& r, float t_max) const;
+
+    // The hit's shading normal (interpolated, or the face normal) and face normal, unnormalised.
+    vec3 face_normal(std::uint32_t tri) const;
+    vec3 shading_normal(const Hit& hit) const;
+    vec3 point(const Hit& hit) const;  // rebuilt from barycentrics: more exact than o + d t
+
+private:
+    Aabb bounds_;
+    Bvh bvh_;
+};
+
+// The box around the triangles (unused vertices left out).
+Aabb bounds_of(const TriangleMesh& mesh);
+
+// Fills corner_normals by averaging, at each vertex, the area-weighted normals of the
+// faces that meet there within `crease_degrees` of each other: smooth curved surfaces,
+// sharp box corners.
+void compute_corner_normals(TriangleMesh& mesh, float crease_degrees = 60.0f);
+
+}  // namespace rt

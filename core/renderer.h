@@ -1,0 +1,40 @@
+#pragma once
+// Renders a scene in tiles on worker threads. Each pixel depends on nothing but the
+// scene, so the image is the same, byte for byte, whatever the thread count.
+
+#include <functional>
+#include <stop_token>
+
+#include "core/image.h"
+#include "core/tracer.h"
+
+namespace rt {
+
+struct RenderOptions {
+    TraceOptions trace;
+    int threads = 0;  // 0: every hardware thread
+    int tile_size = 16;
+};
+
+struct RenderStats {
+    RayCounts rays;
+    int threads = 0;
+    double seconds = 0.0;
+    std::uint64_t nonfinite_pixels = 0;  // replaced by black; should stay 0
+    bool cancelled = false;
+
+    double mrays_per_s() const { return seconds > 0.0 ? static_cast<double>(rays.total()) / seconds * 1e-6 : 0.0; }
+};
+
+// Called after each finished tile with (tiles done, tiles in all), from a worker
+// thread but never from two at once.
+using ProgressFn = std::function<void(int done, int total)>;
+
+// Renders scene.camera's view. When `stop` is requested the workers finish their
+// current tile and return; the image is then partly black and stats.cancelled is set.
+Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr,
+             const ProgressFn& progress = {}, std::stop_token stop = {});
+
+int resolve_thread_count(int requested);
+
+}  // namespace rt

@@ -1,0 +1,176 @@
+#include "core/scene.h"
+
+#include <glm/geometric.hpp>
+
+namespace rt {
+namespace {
+
+template <class... F>
+struct Overloaded : F... {
+    using F::operator()...;
+};
+
+// Object-space hit test of one shape; updates hit.t (and prim, b1, b2) on a closer hit.
+bool intersect_shape(const Scene& scene, const Shape& shape, const Ray& r, Hit& hit) {
+    return std::visit(
+        Overloaded{[&](const MeshRef& m) { return scene.meshes[m.mesh].intersect(r, hit); },
+                   [&](const Triangle& tri) {
+                       const auto h = intersect(tri, r, hit.t);
+                       if (h) hit = Hit{h->t, hit.object, 0, h->b1, h->b2};
+                       return h.has_value();
+                   },
+                   [&](const auto& analytic) {
+                       const auto t = intersect(analytic, r, hit.t);
+                       if (t) hit.t = *t;
+                       return t.has_value();
+                   }},
+        shape);
+}
+
+bool occluded_shape(const Scene& scene, const Shape& shape, const Ray& r, float t_max) {
+    if (const auto* m = std::get_if<MeshRef>(&shape)) return scene.meshes[m->mesh].occluded(r, t_max);
+    Hit probe;
+    probe.t = t_max;
+    return intersect_shape(scene, shape, r, probe);
+}
+
+Ray object_ray(const Object& o, const Ray& r) { return o.transform ? o.transform->to_object(r) : r; }
+
+}  // namespace
+
+Aabb Scene::object_bounds(const Object& o) const {
+    Aabb box = std::visit(
+        Overloaded{[&](const Sphere& s) { return Aabb{s.centre - vec3(s.radius), s.centre + vec3(s.radius)}; },
+                   [&](const Triangle& t) {
+                       Aabb b;
+                       b.grow(t.a);
+                       b.grow(t.b);
+                       b.grow(t.c);
+                       return b;
+                   },
+                   [&](const MeshRef& m) { return meshes[m.mesh].bounds(); },
+                   [&](const Plane&) { return Aabb{}; }},
+        o.shape);
+    return o.transform ? box.transformed(o.transform->m) : box;
+}
+
+void Scene::build() {
+    for (auto& mesh : meshes) mesh.build();
+    bounded_.clear();
+    unbounded_.clear();
+    std::vector<Aabb> boxes;
+    for (std::uint32_t i = 0; i < objects.size(); ++i) {
+        if (std::holds_alternative<Plane>(objects[i].shape)) {
+            unbounded_.push_back(i);
+            continue;
+        }
+        const Aabb box = object_bounds(objects[i]);
+        if (box.empty()) continue;  // an empty mesh: nothing to hit
+        bounded_.push_back(i);
+        boxes.push_back(box);
+    }
+    top_.build(boxes);
+}
+
+bool Scene::intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const {
+    const Object& o = objects[object];
+    if (!intersect_shape(*this, o.shape, object_ray(o, r), hit)) return false;
+    hit.object = object;
+    return true;
+}
+
+bool Scene::intersect(const Ray& r, Hit& hit) const {
+    bool found = false;
+    for (std::uint32_t i : unbounded_) found |= intersect_object(i, r, hit);
+    found |= top_.traverse<false>(r, hit.t, [&](std::uint32_t prim, float&) {
+        // hit.t is the traversal's t_max: intersect_object shortens it on a hit.
+        return intersect_object(bounded_[prim], r, hit);
+    });
+    return found;
+}
+
+bool Scene::occluded(const Ray& r, float t_max) const {
+    for (std::uint32_t i : unbounded_)
+        if (occluded_shape(*this, objects[i].shape, object_ray(objects[i], r), t_max)) return true;
+    return top_.traverse<true>(r, t_max, [&](std::uint32_t prim, float& t_limit) {
+        const Object& o = objects[bounded_[prim]];
+        return occluded_shape(*this, o.shape, object_ray(o, r), t_limit);
+    });
+}
+
+SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
+    const Object& o = objects[hit.object];
+    const Ray local = object_ray(o, r);
+    SurfacePoint sp;
+    sp.material = o.material;
+    vec3 p = local.at(hit.t);
+    vec3 ng, ns;
+    std::visit(Overloaded{[&](const Sphere& s) {
+                              // Project back onto the sphere: the point is then as exact as
+                              // floats allow, which the ray offset relies on.
+                              ng = glm::normalize(p - s.centre);
+                              p = s.centre + s.radius * ng;
+                              ns = ng;
+                          },
+                          [&](const Plane& pl) {
+                              p -= (glm::dot(p, pl.normal) - pl.offset) * pl.normal;
+                              ng = ns = pl.normal;
+                          },
+                          [&](const Triangle& tri) {
+                              p = (1.0f - hit.b1 - hit.b2) * tri.a + hit.b1 * tri.b + hit.b2 * tri.c;
+                              ng = ns = glm::cross(tri.b - tri.a, tri.c - tri.a);
+                          },
+                          [&](const MeshRef& m) {
+                              const TriangleMesh& mesh = meshes[m.mesh];
+                              p = mesh.point(hit);
+                              ng = mesh.face_normal(hit.prim);
+                              ns = mesh.shading_normal(hit);
+                              if (m.own_materials && !mesh.materials.empty()) sp.material = mesh.materials[hit.prim];
+                          }},
+               o.shape);
+
+    sp.pattern_point = p;
+    if (const auto* pl = std::get_if<Plane>(&o.shape)) {
+        vec3 t1, t2;  // a plane's checker lies in the plane, not across it
+        tangent_frame(pl->normal, t1, t2);
+        sp.pattern_point = {glm::dot(p, t1), glm::dot(p, t2), 0.0f};
+    }
+    if (o.transform) {
+        p = o.transform->point_to_world(p);
+        ng = o.transform->normal_to_world(ng);
+        ns = o.transform->normal_to_world(ns);
+    } else {
+        ng = glm::normalize(ng);
+        ns = glm::normalize(ns);
+    }
+    sp.p = p;
+    sp.front_face = glm::dot(r.dir, ng) < 0.0f;
+    sp.geometric_normal = sp.front_face ? ng : -ng;
+    // An interpolated normal may lean past the silhouette; keep it on the viewer's side.
+    ns = sp.front_face ? ns : -ns;
+    sp.normal = glm::dot(ns, sp.geometric_normal) > 0.0f ? ns : sp.geometric_normal;
+    return sp;
+}
+
+Aabb Scene::bounds() const {
+    Aabb box;
+    for (const Object& o : objects) box.grow(object_bounds(o));
+    return box;
+}
+
+std::size_t Scene::triangle_count() const {
+    std::size_t n = 0;
+    for (const Object& o : objects) {
+        if (std::holds_alternative<Triangle>(o.shape)) ++n;
+        if (const auto* m = std::get_if<MeshRef>(&o.shape)) n += meshes[m->mesh].triangles.size();
+    }
+    return n;
+}
+
+std::size_t Scene::accel_memory_bytes() const {
+    std::size_t bytes = top_.memory_bytes();
+    for (const auto& mesh : meshes) bytes += mesh.memory_bytes();
+    return bytes;
+}
+
+}  // namespace rt

@@ -1,0 +1,70 @@
+#pragma once
+// Everything one frame needs: camera, lights, materials, meshes and the objects that
+// place shapes in the world. build() makes the acceleration structures; after it the
+// scene is read-only and safe to share between threads.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/bvh.h"
+#include "core/camera.h"
+#include "core/hit.h"
+#include "core/light.h"
+#include "core/material.h"
+#include "core/mesh.h"
+#include "core/shapes.h"
+#include "core/transform.h"
+
+namespace rt {
+
+struct MeshRef {
+    std::uint32_t mesh = 0;     // index into Scene::meshes
+    bool own_materials = true;  // use the mesh's per-triangle materials (else the object's)
+};
+
+using Shape = std::variant<Sphere, Plane, Triangle, MeshRef>;
+
+struct Object {
+    std::string name;
+    Shape shape;
+    std::uint32_t material = 0;  // for meshes: used where the mesh names no material
+    std::optional<Transform> transform;
+};
+
+class Scene {
+public:
+    Camera camera;
+    vec3 background{0.0f};
+    vec3 ambient{0.1f};  // the tutorial's I_a
+    std::vector<Light> lights;
+    std::vector<Material> materials;
+    std::vector<TriangleMesh> meshes;
+    std::vector<Object> objects;
+
+    void build();
+
+    // Closest hit in (0, hit.t); hit.t may be preset to limit the search.
+    bool intersect(const Ray& r, Hit& hit) const;
+    // Any hit in (0, t_max): the shadow feeler's question.
+    bool occluded(const Ray& r, float t_max) const;
+    // One object alone (the item buffer hands the tracer an object to test).
+    bool intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const;
+
+    SurfacePoint surface(const Ray& r, const Hit& hit) const;
+
+    Aabb bounds() const;  // of the bounded objects (planes are left out)
+    std::size_t triangle_count() const;
+    std::size_t accel_memory_bytes() const;
+
+private:
+    Aabb object_bounds(const Object& o) const;
+
+    Bvh top_;                              // over the bounded objects
+    std::vector<std::uint32_t> bounded_;   // BVH prim -> object
+    std::vector<std::uint32_t> unbounded_; // planes: tested for every ray
+};
+
+}  // namespace rt

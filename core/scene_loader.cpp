@@ -1,0 +1,347 @@
+#include "core/scene_loader.h"
+
+#include <map>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/error.h"
+#include "core/json_reader.h"
+#include "core/obj_loader.h"
+
+namespace rt {
+namespace {
+
+constexpr int kMaxResolution = 16384;
+
+std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+// Walks one JSON scene into a Scene, keeping the names and caches that loading needs.
+class JsonSceneReader {
+public:
+    JsonSceneReader(std::filesystem::path path, LoadedScene& out)
+        : path_(std::move(path)), file_(path_.string()), out_(out), scene_(out.scene) {}
+
+    void read(const nlohmann::json& doc) {
+        const JsonValue root(doc, "", file_);
+        root.keys({"camera", "resolution", "background", "ambient", "lights", "materials", "objects"});
+        read_materials(root.find("materials"));
+        if (const auto bg = root.find("background")) scene_.background = bg->colour();
+        if (const auto amb = root.find("ambient")) scene_.ambient = amb->colour();
+        int cols = 640, rows = 480;
+        if (const auto res = root.find("resolution")) {
+            const auto wh = res->elements(2, 2);
+            cols = wh[0].integer_between(1, kMaxResolution);
+            rows = wh[1].integer_between(1, kMaxResolution);
+        }
+        scene_.camera = read_camera(root["camera"], cols, rows);
+        if (const auto lights = root.find("lights"))
+            for (const JsonValue& l : lights->elements()) scene_.lights.push_back(read_light(l));
+        for (const JsonValue& o : root["objects"].elements()) read_object(o);
+    }
+
+private:
+    Camera read_camera(const JsonValue& j, int cols, int rows) const;
+    Light read_light(const JsonValue& j) const;
+    void read_materials(const std::optional<JsonValue>& j);
+    Material read_material(const JsonValue& j, Material m) const;
+    std::uint32_t material_index(const JsonValue& j) const;
+    void read_object(const JsonValue& j);
+    Shape read_mesh(const JsonValue& j, glm::mat4& normalize);
+    std::uint32_t load_mesh(const JsonValue& file_value);
+
+    std::filesystem::path path_;
+    std::string file_;
+    LoadedScene& out_;
+    Scene& scene_;
+    std::map<std::string, std::uint32_t> material_names_;
+    std::map<std::filesystem::path, std::uint32_t> mesh_cache_;
+};
+
+vec3 unit_vector(const JsonValue& j) {
+    const vec3 v = j.vector3();
+    const float len = glm::length(v);
+    if (!(len > 0.0f) || !std::isfinite(len)) j.fail("must be a non-zero vector");
+    return v / len;
+}
+
+Camera JsonSceneReader::read_camera(const JsonValue& j, int cols, int rows) const {
+    j.keys({"eye", "look_at", "up", "fov", "u", "v", "n", "W", "H", "N"});
+    const vec3 eye = j["eye"].vector3();
+    Camera cam;
+    if (j.has("look_at")) {
+        if (j.has("u") || j.has("v") || j.has("n")) j.fail("give either look_at and up, or u, v and n");
+        const vec3 target = j["look_at"].vector3();
+        if (!(glm::length(target - eye) > 0.0f)) j["look_at"].fail("must differ from eye");
+        const vec3 up = j.has("up") ? unit_vector(j["up"]) : vec3(0.0f, 1.0f, 0.0f);
+        if (glm::length(glm::cross(up, glm::normalize(target - eye))) < 1e-4f)
+            (j.has("up") ? j["up"] : j).fail("up is parallel to the viewing direction");
+        const float fov = j.has("fov") ? j["fov"].number_between(0.01f, 179.0f) : 40.0f;
+        cam = Camera::look_at(eye, target, up, fov, cols, rows);
+    } else {
+        cam.eye = eye;
+        cam.u = unit_vector(j["u"]);
+        cam.v = unit_vector(j["v"]);
+        cam.n = unit_vector(j["n"]);
+        if (std::fabs(glm::dot(cam.u, cam.v)) > 1e-3f || std::fabs(glm::dot(cam.u, cam.n)) > 1e-3f ||
+            std::fabs(glm::dot(cam.v, cam.n)) > 1e-3f)
+            j.fail("u, v and n must be orthogonal");
+        cam.cols = cols;
+        cam.rows = rows;
+    }
+    if (j.has("N") || j.has("H") || j.has("W")) {
+        if (j.has("fov")) j.fail("give either fov, or the view plane W, H and N");
+        cam.N = j.has("N") ? j["N"].number_above(0.0f) : 1.0f;
+        cam.H = j["H"].number_above(0.0f);
+        cam.W = j.has("W") ? j["W"].number_above(0.0f) : cam.H * static_cast<float>(cols) / static_cast<float>(rows);
+    } else if (!j.has("look_at")) {
+        j.fail("a camera given by u, v and n needs the view plane H (and optionally W and N)");
+    }
+    return cam;
+}
+
+Light JsonSceneReader::read_light(const JsonValue& j) const {
+    const std::string type = j["type"].string();
+    Light light;
+    if (type == "point") {
+        j.keys({"type", "position", "color"});
+        light.type = Light::Type::kPoint;
+        light.position = j["position"].vector3();
+    } else if (type == "directional") {
+        j.keys({"type", "direction", "color"});
+        light.type = Light::Type::kDirectional;
+        light.direction = unit_vector(j["direction"]);
+    } else {
+        j["type"].fail("unknown light type \"" + type + "\" (expected point or directional)");
+    }
+    if (const auto c = j.find("color")) light.colour = c->colour();
+    return light;
+}
+
+void JsonSceneReader::read_materials(const std::optional<JsonValue>& j) {
+    for (const Material& m : material_presets()) {
+        material_names_[m.name] = static_cast<std::uint32_t>(scene_.materials.size());
+        scene_.materials.push_back(m);
+    }
+    if (!j) return;
+    for (const auto& [name, value] : j->members()) {
+        Material m = read_material(value, Material{});
+        m.name = name;
+        const auto known = material_names_.find(name);
+        if (known != material_names_.end()) {
+            scene_.materials[known->second] = m;  // a scene may redefine a preset
+        } else {
+            material_names_[name] = static_cast<std::uint32_t>(scene_.materials.size());
+            scene_.materials.push_back(m);
+        }
+    }
+}
+
+Material JsonSceneReader::read_material(const JsonValue& j, Material m) const {
+    j.keys({"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "checker"});
+    if (const auto v = j.find("ka")) m.ka = v->colour();
+    if (const auto v = j.find("kd")) m.kd = v->colour();
+    if (const auto v = j.find("ks")) m.ks = v->colour();
+    if (const auto v = j.find("shininess")) m.shininess = v->number_at_least(0.0f);
+    if (const auto v = j.find("reflectivity")) m.reflectivity = v->number_between(0.0f, 1.0f);
+    if (const auto v = j.find("transparency")) m.transparency = v->number_between(0.0f, 1.0f);
+    if (const auto v = j.find("ior")) m.ior = v->number_above(0.0f);
+    if (const auto c = j.find("checker")) {
+        c->keys({"colors", "scale"});
+        const auto colours = (*c)["colors"].elements(2, 2);
+        m.checker = Checker{colours[0].colour(), colours[1].colour(),
+                            c->has("scale") ? (*c)["scale"].number_above(0.0f) : 1.0f};
+    }
+    return m;
+}
+
+std::uint32_t JsonSceneReader::material_index(const JsonValue& j) const {
+    const std::string name = j.string();
+    const auto it = material_names_.find(name);
+    if (it != material_names_.end()) return it->second;
+    std::string known;
+    for (const auto& [n, index] : material_names_) known += (known.empty() ? "" : ", ") + n;
+    j.fail("unknown material \"" + name + "\" (known: " + known + ")");
+}
+
+// Scale, then rotate (x, then y, then z, in degrees), then translate; or a 4x4 matrix
+// given row by row. An array of these applies its elements in order.
+glm::mat4 read_transform(const JsonValue& j) {
+    if (j.is_array()) {
+        glm::mat4 m(1.0f);
+        for (const JsonValue& step : j.elements()) m = read_transform(step) * m;
+        return m;
+    }
+    j.keys({"translate", "rotate", "scale", "matrix"});
+    if (const auto mat = j.find("matrix")) {
+        if (j.has("translate") || j.has("rotate") || j.has("scale"))
+            j.fail("\"matrix\" cannot be combined with translate, rotate or scale");
+        glm::mat4 m;
+        const auto rows = mat->elements(4, 4);
+        for (int r = 0; r < 4; ++r) {
+            const auto row = rows[r].elements(4, 4);
+            for (int c = 0; c < 4; ++c) m[c][r] = row[c].number();
+        }
+        return m;
+    }
+    glm::mat4 m(1.0f);
+    if (const auto s = j.find("scale")) m = glm::scale(glm::mat4(1.0f), s->is_number() ? vec3(s->number()) : s->vector3());
+    if (const auto r = j.find("rotate")) {
+        const vec3 deg = r->vector3();
+        for (int axis = 0; axis < 3; ++axis) {
+            vec3 unit(0.0f);
+            unit[axis] = 1.0f;
+            m = glm::rotate(glm::mat4(1.0f), glm::radians(deg[axis]), unit) * m;
+        }
+    }
+    if (const auto t = j.find("translate")) m = glm::translate(glm::mat4(1.0f), t->vector3()) * m;
+    return m;
+}
+
+void JsonSceneReader::read_object(const JsonValue& j) {
+    const std::string type = j["type"].string();
+    Object o;
+    glm::mat4 pre(1.0f);  // applied before the object's own transform (mesh normalisation)
+    if (type == "sphere") {
+        j.keys({"type", "name", "material", "transform", "center", "radius"});
+        o.shape = Sphere{j.has("center") ? j["center"].vector3() : vec3(0.0f),
+                         j.has("radius") ? j["radius"].number_above(0.0f) : 1.0f};
+    } else if (type == "plane") {
+        j.keys({"type", "name", "material", "transform", "normal", "offset", "point"});
+        const vec3 n = unit_vector(j["normal"]);
+        if (j.has("offset") && j.has("point")) j.fail("give either offset or point, not both");
+        o.shape = Plane{n, j.has("point") ? glm::dot(j["point"].vector3(), n)
+                                          : (j.has("offset") ? j["offset"].number() : 0.0f)};
+    } else if (type == "triangle") {
+        j.keys({"type", "name", "material", "transform", "vertices"});
+        const auto v = j["vertices"].elements(3, 3);
+        const Triangle tri{v[0].vector3(), v[1].vector3(), v[2].vector3()};
+        if (!(glm::length(glm::cross(tri.b - tri.a, tri.c - tri.a)) > 0.0f))
+            j["vertices"].fail("the vertices are collinear (the triangle has no area)");
+        o.shape = tri;
+    } else if (type == "mesh") {
+        j.keys({"type", "name", "material", "transform", "file", "normalize"});
+        o.shape = read_mesh(j, pre);
+    } else {
+        j["type"].fail("unknown object type \"" + type + "\" (expected sphere, plane, triangle or mesh)");
+    }
+    o.name = j.has("name") ? j["name"].string() : type + " " + j.pointer().substr(j.pointer().rfind('/') + 1);
+    o.material = j.has("material") ? material_index(j["material"]) : material_names_.at("default");
+    const glm::mat4 m = (j.has("transform") ? read_transform(j["transform"]) : glm::mat4(1.0f)) * pre;
+    if (m != glm::mat4(1.0f)) {
+        o.transform = Transform::from_matrix(m);
+        if (!o.transform) (j.has("transform") ? j["transform"] : j).fail("the transform is singular (or not affine)");
+    }
+    scene_.objects.push_back(std::move(o));
+}
+
+Shape JsonSceneReader::read_mesh(const JsonValue& j, glm::mat4& normalize) {
+    const std::uint32_t index = load_mesh(j["file"]);
+    if (j.has("normalize") && j["normalize"].boolean()) {
+        // Largest side 1, centred on x and z, resting on y = 0.
+        const Aabb b = bounds_of(scene_.meshes[index]);
+        const vec3 e = b.extent();
+        const float largest = std::max({e.x, e.y, e.z});
+        if (!(largest > 0.0f)) j["normalize"].fail("the mesh has no extent to normalise");
+        const vec3 anchor{b.centre().x, b.lo.y, b.centre().z};
+        normalize = glm::scale(glm::mat4(1.0f), vec3(1.0f / largest)) * glm::translate(glm::mat4(1.0f), -anchor);
+    }
+    return MeshRef{index, !j.has("material")};
+}
+
+std::uint32_t JsonSceneReader::load_mesh(const JsonValue& file_value) {
+    const std::filesystem::path mesh_path = path_.parent_path() / file_value.string();
+    const auto cached = mesh_cache_.find(mesh_path);
+    if (cached != mesh_cache_.end()) return cached->second;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(mesh_path, ec))
+        file_value.fail("cannot open mesh file \"" + mesh_path.string() + "\"");
+    ObjData obj = load_obj(mesh_path);
+    const auto first_material = static_cast<std::uint32_t>(scene_.materials.size());
+    for (Material& m : obj.materials) {
+        m.name = mesh_path.filename().string() + ":" + m.name;
+        scene_.materials.push_back(std::move(m));
+    }
+    const std::uint32_t fallback = material_names_.at("default");
+    for (std::uint32_t& m : obj.mesh.materials)
+        m = m < obj.materials.size() ? first_material + m : fallback;
+    out_.warnings.insert(out_.warnings.end(), obj.warnings.begin(), obj.warnings.end());
+    const auto index = static_cast<std::uint32_t>(scene_.meshes.size());
+    scene_.meshes.push_back(std::move(obj.mesh));
+    mesh_cache_[mesh_path] = index;
+    return index;
+}
+
+}  // namespace
+
+std::vector<Material> material_presets() {
+    Material standard;  // default: grey plastic
+    standard.ka = vec3(0.2f);
+    standard.kd = vec3(0.7f);
+    standard.ks = vec3(0.3f);
+    Material matte = standard;
+    matte.name = "matte";
+    matte.ks = vec3(0.0f);
+    Material mirror;
+    mirror.name = "mirror";
+    mirror.ka = vec3(0.0f);
+    mirror.kd = vec3(0.05f);
+    mirror.ks = vec3(0.8f);
+    mirror.shininess = 200.0f;
+    mirror.reflectivity = 0.9f;
+    Material glass = mirror;
+    glass.name = "glass";
+    glass.reflectivity = 0.1f;
+    glass.transparency = 0.9f;
+    glass.ior = 1.5f;
+    return {standard, matte, mirror, glass};
+}
+
+LoadedScene load_json_scene(const std::filesystem::path& path) {
+    const nlohmann::json doc = parse_json_file(path);
+    LoadedScene out;
+    JsonSceneReader(path, out).read(doc);
+    return out;
+}
+
+void frame_bounds(Scene& scene, const Aabb& bounds, int cols, int rows) {
+    const vec3 centre = bounds.centre();
+    const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-6f);
+    const float fov = 40.0f;
+    const float distance = radius / std::sin(glm::radians(fov) * 0.5f) * 1.05f;
+    const vec3 view_dir = glm::normalize(vec3(0.35f, 0.3f, 1.0f));
+    scene.camera = Camera::look_at(centre + distance * view_dir, centre, vec3(0, 1, 0), fov, cols, rows);
+    Light key{Light::Type::kPoint, centre + radius * vec3(2.0f, 4.0f, 3.0f), {}, vec3(0.8f)};
+    Light fill{Light::Type::kPoint, centre + radius * vec3(-3.0f, 1.5f, 2.0f), {}, vec3(0.35f)};
+    scene.lights = {key, fill};
+}
+
+LoadedScene load_obj_scene(const std::filesystem::path& path) {
+    ObjData obj = load_obj(path);
+    LoadedScene out;
+    Scene& scene = out.scene;
+    scene.materials = material_presets();
+    for (Material& m : obj.materials) scene.materials.push_back(std::move(m));
+    const auto presets = static_cast<std::uint32_t>(material_presets().size());
+    for (std::uint32_t& m : obj.mesh.materials) m = m < obj.materials.size() ? presets + m : 0;
+    const Aabb bounds = bounds_of(obj.mesh);
+    scene.meshes.push_back(std::move(obj.mesh));
+    scene.objects.push_back(Object{path.filename().string(), MeshRef{0, true}, 0, std::nullopt});
+    scene.background = vec3(0.05f);
+    scene.ambient = vec3(0.15f);
+    frame_bounds(scene, bounds, 640, 480);
+    out.warnings = std::move(obj.warnings);
+    return out;
+}
+
+LoadedScene load_scene(const std::filesystem::path& path) {
+    const std::string ext = lower(path.extension().string());
+    if (ext == ".obj") return load_obj_scene(path);
+    if (ext == ".json") return load_json_scene(path);
+    throw Error(path.string(), "open", "unknown scene format \"" + ext + "\" (expected .json or .obj)");
+}
+
+}  // namespace rt

@@ -1,0 +1,103 @@
+#include "core/tracer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace rt {
+vec3 reflect_dir(const vec3& d, const vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
+
+Refraction refract_dir(const vec3& d, const vec3& n, float eta_from, float eta_to) {
+    const float eta = eta_from / eta_to;
+    const float cos_i = -glm::dot(d, n);
+    const float sin2_t = eta * eta * std::max(0.0f, 1.0f - cos_i * cos_i);
+    if (sin2_t > 1.0f) return {true, vec3(0.0f)};  // past the critical angle
+    const float cos_t = std::sqrt(1.0f - sin2_t);
+    return {false, eta * d + (eta * cos_i - cos_t) * n};
+}
+
+vec3 Tracer::trace_primary(const Ray& r, RayCounts& counts) const {
+    ++counts.primary;
+    Hit hit;
+    if (!scene_.intersect(r, hit)) return scene_.background;
+    return shade(r, hit, 0, 1.0f, counts);
+}
+
+vec3 Tracer::shade_primary(const Ray& r, const Hit& hit, RayCounts& counts) const {
+    ++counts.primary;
+    return hit.found() ? shade(r, hit, 0, 1.0f, counts) : scene_.background;
+}
+
+vec3 Tracer::trace(const Ray& r, int depth, float weight, RayCounts& counts) const {
+    Hit hit;
+    if (!scene_.intersect(r, hit)) return scene_.background;
+    return shade(r, hit, depth, weight, counts);
+}
+
+vec3 Tracer::shade(const Ray& r, const Hit& hit, int depth, float weight, RayCounts& counts) const {
+    const SurfacePoint sp = scene_.surface(r, hit);
+    const Material& m = scene_.materials[sp.material];
+    vec3 colour = phong(r, sp, counts);
+    if (depth >= options_.max_depth) return colour;
+    // R_n = R_amb + R_diff + R_spec + reflectivity R_(n-1), and the same for transmission.
+    if (options_.reflections && m.reflectivity * weight >= options_.min_weight)
+        colour += m.reflectivity * reflected(r, sp, depth, weight * m.reflectivity, counts);
+    if (options_.refractions && m.transparency * weight >= options_.min_weight)
+        colour += m.transparency * refracted(r, sp, depth, weight * m.transparency, counts);
+    return colour;
+}
+
+vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) const {
+    const Material& m = scene_.materials[sp.material];
+    const vec3 pattern = m.checker ? m.checker->at(sp.pattern_point) : vec3(1.0f);
+    vec3 colour = m.ka * pattern * scene_.ambient;
+    const vec3 to_viewer = -glm::normalize(r.dir);
+    const vec3 p = offset_ray_origin(sp.p, sp.geometric_normal);
+    for (const Light& light : scene_.lights) {
+        vec3 to_light;
+        light.feeler(sp.p, to_light);
+        to_light = glm::normalize(to_light);
+        const float n_dot_l = glm::dot(sp.normal, to_light);
+        if (n_dot_l <= 0.0f) continue;  // the light is behind the surface
+        if (!visible(p, sp, light, counts)) continue;
+        const vec3 mirrored = reflect_dir(-to_light, sp.normal);
+        const float r_dot_v = std::max(0.0f, glm::dot(mirrored, to_viewer));
+        const vec3 specular = r_dot_v > 0.0f ? m.ks * std::pow(r_dot_v, m.shininess) : vec3(0.0f);
+        colour += (m.kd * pattern * n_dot_l + specular) * light.colour;
+    }
+    return colour;
+}
+
+bool Tracer::visible(const vec3& p, const SurfacePoint& sp, const Light& light, RayCounts& counts) const {
+    if (!options_.shadows) return true;
+    vec3 dir;
+    const float t_max = light.feeler(p, dir);
+    if (glm::dot(dir, sp.geometric_normal) <= 0.0f) return false;  // behind the true surface
+    ++counts.shadow;
+    return !scene_.occluded(Ray{p, dir}, t_max);
+}
+
+vec3 Tracer::reflected(const Ray& r, const SurfacePoint& sp, int depth, float weight,
+                       RayCounts& counts) const {
+    ++counts.reflected;
+    const vec3 d = reflect_dir(glm::normalize(r.dir), sp.normal);
+    return trace(Ray{offset_ray_origin(sp.p, sp.geometric_normal), d}, depth + 1, weight, counts);
+}
+
+vec3 Tracer::refracted(const Ray& r, const SurfacePoint& sp, int depth, float weight,
+                       RayCounts& counts) const {
+    const Material& m = scene_.materials[sp.material];
+    // Entering through the outward side goes from air into the material, else back out.
+    const float eta_from = sp.front_face ? 1.0f : m.ior;
+    const float eta_to = sp.front_face ? m.ior : 1.0f;
+    const Refraction t = refract_dir(glm::normalize(r.dir), sp.normal, eta_from, eta_to);
+    if (t.total_internal_reflection) {
+        // No light crosses: what would have been transmitted is reflected instead.
+        return reflected(r, sp, depth, weight, counts);
+    }
+    ++counts.refracted;
+    return trace(Ray{offset_ray_origin(sp.p, -sp.geometric_normal), t.dir}, depth + 1, weight, counts);
+}
+
+}  // namespace rt

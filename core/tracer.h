@@ -1,0 +1,70 @@
+#pragma once
+// The Whitted tracer: Phong with shadow feelers at each hit, plus reflected and
+// refracted rays, stopped by depth (number) and by accumulated weight (strength).
+
+#include <cstdint>
+
+#include "core/scene.h"
+
+namespace rt {
+
+struct TraceOptions {
+    bool shadows = true;
+    bool reflections = true;
+    bool refractions = true;
+    int max_depth = 5;         // bounces after the primary ray
+    float min_weight = 0.01f;  // a ray that adds less than this to the pixel is not cast
+};
+
+struct RayCounts {
+    std::uint64_t primary = 0;
+    std::uint64_t shadow = 0;
+    std::uint64_t reflected = 0;
+    std::uint64_t refracted = 0;
+
+    std::uint64_t total() const { return primary + shadow + reflected + refracted; }
+    RayCounts& operator+=(const RayCounts& o) {
+        primary += o.primary;
+        shadow += o.shadow;
+        reflected += o.reflected;
+        refracted += o.refracted;
+        return *this;
+    }
+};
+
+// Mirror direction d' = d - 2 (d . n) n, for unit n.
+vec3 reflect_dir(const vec3& d, const vec3& n);
+
+// Snell's law for a unit direction d meeting a surface whose unit normal n faces it,
+// going from index eta_from into eta_to. Nothing on total internal reflection.
+struct Refraction {
+    bool total_internal_reflection = false;
+    vec3 dir{0.0f};
+};
+Refraction refract_dir(const vec3& d, const vec3& n, float eta_from, float eta_to);
+
+class Tracer {
+public:
+    Tracer(const Scene& scene, const TraceOptions& options) : scene_(scene), options_(options) {}
+
+    // The colour seen along a camera ray (linear RGB).
+    vec3 trace_primary(const Ray& r, RayCounts& counts) const;
+    // The same when the first hit is already known (from the item buffer, say).
+    vec3 shade_primary(const Ray& r, const Hit& hit, RayCounts& counts) const;
+
+    // The local Phong term at a surface point: ka Ia + sum over lights of
+    // visible(p, l) (kd max(0, n.l) + ks max(0, r.v)^shininess) I_l.
+    vec3 phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) const;
+
+private:
+    vec3 trace(const Ray& r, int depth, float weight, RayCounts& counts) const;
+    vec3 shade(const Ray& r, const Hit& hit, int depth, float weight, RayCounts& counts) const;
+    vec3 reflected(const Ray& r, const SurfacePoint& sp, int depth, float weight, RayCounts& counts) const;
+    vec3 refracted(const Ray& r, const SurfacePoint& sp, int depth, float weight, RayCounts& counts) const;
+    bool visible(const vec3& p, const SurfacePoint& sp, const Light& light, RayCounts& counts) const;
+
+    const Scene& scene_;
+    TraceOptions options_;
+};
+
+}  // namespace rt
