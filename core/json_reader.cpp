@@ -48,9 +48,11 @@ std::string format_number(float x) {
 
 // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 3,
 // column 7: "; keep what follows.
-std::string parse_error_detail(const std::string& message) {
+std::string parse_error_detail(std::string message) {
+    if (!message.empty() && message[0] == '[') message.erase(0, message.find("] ") + 2);
+    const auto at = message.find(" at line ");
     const auto colon = message.find(": ");
-    return colon == std::string::npos ? message : message.substr(colon + 2);
+    return at != std::string::npos && colon != std::string::npos ? message.substr(colon + 2) : message;
 }
 
 std::string line_and_column(const std::string& text, std::size_t byte) {
@@ -88,6 +90,13 @@ nlohmann::json parse_json_file(const std::filesystem::path& path) {
         return nlohmann::json::parse(text, limit_depth, /*allow_exceptions=*/true, /*ignore_comments=*/true);
     } catch (const nlohmann::json::parse_error& e) {
         throw Error(file, line_and_column(text, e.byte), parse_error_detail(e.what()));
+    } catch (const nlohmann::json::out_of_range& e) {
+        // A number too large for a double: locate the literal nlohmann quotes.
+        const std::string message = parse_error_detail(e.what());
+        const auto open = message.find('\''), close = message.rfind('\'');
+        const std::string literal = open < close ? message.substr(open + 1, close - open - 1) : "";
+        const std::size_t at = literal.empty() ? std::string::npos : text.find(literal);
+        throw Error(file, at == std::string::npos ? "(document)" : line_and_column(text, at + 1), message);
     } catch (const TooDeep&) {
         throw Error(file, "(document)", "nested more than " + std::to_string(kMaxNesting) + " levels deep");
     }

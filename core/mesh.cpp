@@ -1,6 +1,7 @@
 #include "core/mesh.h"
 
 #include <cmath>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -69,20 +70,42 @@ vec3 TriangleMesh::point(const Hit& hit) const {
            hit.b2 * positions[idx[2]];
 }
 
+namespace {
+
+// For each vertex, the first vertex with exactly the same position.
+std::vector<std::uint32_t> weld_positions(const std::vector<vec3>& positions) {
+    struct Hash {
+        std::size_t operator()(const vec3& p) const {
+            std::size_t h = 0;
+            for (int i = 0; i < 3; ++i) h = h * 1000003u ^ std::hash<float>{}(p[i]);
+            return h;
+        }
+    };
+    std::unordered_map<vec3, std::uint32_t, Hash> first;
+    std::vector<std::uint32_t> weld(positions.size());
+    for (std::uint32_t i = 0; i < positions.size(); ++i) weld[i] = first.try_emplace(positions[i], i).first->second;
+    return weld;
+}
+
+}  // namespace
+
 void compute_corner_normals(TriangleMesh& mesh, float crease_degrees) {
     const std::size_t tri_count = mesh.triangles.size();
     std::vector<vec3> face(tri_count);
     for (std::size_t t = 0; t < tri_count; ++t) face[t] = mesh.face_normal(static_cast<std::uint32_t>(t));
 
-    // Faces around each vertex, as a compressed adjacency list.
+    // Vertices at the same position count as one (patch seams repeat them), so
+    // normals are smooth across seams; then the faces around each such vertex, as a
+    // compressed adjacency list.
+    const std::vector<std::uint32_t> weld = weld_positions(mesh.positions);
     std::vector<std::uint32_t> start(mesh.positions.size() + 1, 0);
     for (const auto& tri : mesh.triangles)
-        for (int k = 0; k < 3; ++k) ++start[tri[k] + 1];
+        for (int k = 0; k < 3; ++k) ++start[weld[tri[k]] + 1];
     for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     std::vector<std::uint32_t> faces_at(start.back());
     for (std::uint32_t t = 0; t < tri_count; ++t)
-        for (int k = 0; k < 3; ++k) faces_at[fill[mesh.triangles[t][k]]++] = t;
+        for (int k = 0; k < 3; ++k) faces_at[fill[weld[mesh.triangles[t][k]]]++] = t;
 
     const float cos_crease = std::cos(crease_degrees * 3.14159265f / 180.0f);
     mesh.corner_normals.assign(3 * tri_count, vec3(0.0f));
@@ -90,7 +113,7 @@ void compute_corner_normals(TriangleMesh& mesh, float crease_degrees) {
         const float len = glm::length(face[t]);
         const vec3 own = len > 0.0f ? face[t] / len : vec3(0.0f);
         for (int k = 0; k < 3; ++k) {
-            const std::uint32_t v = mesh.triangles[t][k];
+            const std::uint32_t v = weld[mesh.triangles[t][k]];
             vec3 sum(0.0f);
             for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
                 const vec3& other = face[faces_at[i]];  // length = 2 x area: area weighting

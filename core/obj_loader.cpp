@@ -1,6 +1,8 @@
 #include "core/obj_loader.h"
 
+#include <charconv>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include <glm/geometric.hpp>
@@ -52,7 +54,8 @@ bool copy_triangles(const std::string& file, const tinyobj::ObjReader& reader, T
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         const auto& idx = shape.mesh.indices;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-            const std::string where = "object \"" + shape.name + "\", face " + std::to_string(f + 1);
+            const std::string where = (shape.name.empty() ? "" : "object \"" + shape.name + "\", ") + "face " +
+                                      std::to_string(f + 1);
             if (shape.mesh.num_face_vertices[f] != 3) throw Error(file, where, "face was not triangulated");
             glm::uvec3 tri;
             for (int k = 0; k < 3; ++k) {
@@ -78,6 +81,25 @@ bool copy_triangles(const std::string& file, const tinyobj::ObjReader& reader, T
     return all_normals;
 }
 
+// tinyobjloader reads "nan", "inf" or "1e999" as some number without a word, so the
+// vertex lines are checked first: a coordinate must be a finite float.
+void check_vertex_lines(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    for (std::size_t number = 1; std::getline(in, line); ++number) {
+        if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
+        std::istringstream tokens(line.substr(2));
+        std::string token;
+        for (int k = 0; k < 3 && tokens >> token; ++k) {
+            float value = 0.0f;
+            const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+            if (ec != std::errc{} || end != token.data() + token.size() || !std::isfinite(value))
+                throw Error(path.string(), "line " + std::to_string(number),
+                            "vertex coordinate \"" + token + "\" is not a finite number");
+        }
+    }
+}
+
 }  // namespace
 
 ObjData load_obj(const std::filesystem::path& path, float crease_degrees) {
@@ -85,6 +107,7 @@ ObjData load_obj(const std::filesystem::path& path, float crease_degrees) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw Error(file, "open", "cannot open file (does it exist?)");
 
+    check_vertex_lines(path);
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;

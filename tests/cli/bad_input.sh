@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Every file in the bad-input corpus, and every bad flag, must make rtrender print exactly
+# one line "FILE: WHERE: WHAT" on stderr and exit with status 1: no crash, no hang,
+# no image.
+#   bad_input.sh RTRENDER CORPUS_DIR
+set -u
+rtrender=$1
+corpus=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+cases=0
+
+# check NAME EXPECTED_FILE_PREFIX -- ARGS...
+check() {
+    local name=$1 file=$2
+    shift 3
+    cases=$((cases + 1))
+    local status=0
+    timeout 10 "$rtrender" "$@" -o "$work/out.png" >"$work/stdout" 2>"$work/stderr" || status=$?
+    local lines
+    lines=$(wc -l <"$work/stderr")
+    local message
+    message=$(cat "$work/stderr")
+    if [ "$status" -ne 1 ]; then
+        echo "FAIL $name: exit status $status, expected 1 ($message)"
+    elif [ "$lines" -ne 1 ]; then
+        echo "FAIL $name: $lines lines on stderr, expected 1:"; sed 's/^/    /' "$work/stderr"
+    elif ! grep -Eq "^$file[^:]*: [^:]+: .+$" "$work/stderr"; then
+        echo "FAIL $name: not 'FILE: WHERE: WHAT' naming $file: $message"
+    elif [ -e "$work/out.png" ]; then
+        echo "FAIL $name: wrote an image anyway"
+    else
+        echo "ok   $name: $message"
+        return
+    fi
+    failures=$((failures + 1))
+}
+
+for path in "$corpus"/*.json "$corpus"/*.obj; do
+    name=$(basename "$path")
+    case $name in
+        index_out_of_range.obj) continue ;;           # a part of mesh_index_out_of_range.json
+        mesh_index_out_of_range.json) expected="$corpus/index_out_of_range.obj" ;;
+        *) expected=$path ;;
+    esac
+    check "$name" "$expected" -- "$path"
+done
+
+scene="$corpus/../../../assets/scenes/tutorial.json"
+check "missing scene file" "$work/none.json" -- "$work/none.json"
+check "--size not WxH" "rtrender" -- "$scene" --size 640
+check "--size zero" "rtrender" -- "$scene" --size 0x480
+check "--threads 0" "rtrender" -- "$scene" --threads 0
+check "--max-depth -1" "rtrender" -- "$scene" --max-depth -1
+check "unknown flag" "rtrender" -- "$scene" --shadows-please
+check "directory as scene" "$corpus" -- "$corpus"
+status=0
+timeout 10 "$rtrender" "$scene" -o "$work/out.bmp" 2>"$work/stderr" || status=$?
+cases=$((cases + 1))
+if [ "$status" -ne 1 ] || ! grep -q "out.bmp: -o: unsupported format" "$work/stderr"; then
+    echo "FAIL -o out.bmp: status $status: $(cat "$work/stderr")"
+    failures=$((failures + 1))
+fi
+
+echo "$((cases - failures)) passed, $failures failed"
+[ "$failures" -eq 0 ]

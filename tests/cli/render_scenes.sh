@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# rtrender renders every scene in assets/scenes and a bare .obj, writes PNG, EXR and
+# the --stats JSON, and says what it wrote.
+#   render_scenes.sh RTRENDER ASSETS_DIR OUT_DIR
+set -u
+rtrender=$1
+assets=$2
+out=$3
+rm -rf "$out"
+mkdir -p "$out"
+failures=0
+cases=0
+
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+
+for scene in "$assets"/scenes/*.json "$assets"/models/teapot.obj; do
+    name=$(basename "${scene%.*}")
+    cases=$((cases + 1))
+    if ! timeout 120 "$rtrender" "$scene" --size 96x72 -o "$out/$name.png" --stats "$out/$name.stats.json" >"$out/$name.log" 2>&1; then
+        fail "$name: exit status $?: $(cat "$out/$name.log")"
+        continue
+    fi
+    grep -q "^$out/$name.png: 96x72" "$out/$name.log" || fail "$name: summary line missing: $(cat "$out/$name.log")"
+    [ -s "$out/$name.png" ] || fail "$name: no PNG written"
+    for key in width height threads load_seconds build_seconds trace_seconds primary shadow reflected refracted mrays_per_s; do
+        grep -q "\"$key\"" "$out/$name.stats.json" || fail "$name: stats lack \"$key\""
+    done
+    grep -q '"primary": 6912' "$out/$name.stats.json" || fail "$name: expected 96x72 = 6912 primary rays"
+    grep -q '"nonfinite_pixels": 0' "$out/$name.stats.json" || fail "$name: NaN/Inf pixels"
+    echo "ok   $name"
+done
+
+cases=$((cases + 1))
+if "$rtrender" "$assets/scenes/tutorial.json" --size 64x48 -o "$out/tutorial.exr" --quiet --max-depth 2 --threads 1 \
+        --no-shadows --no-reflections --no-refractions >"$out/exr.log" 2>&1; then
+    [ -s "$out/tutorial.exr" ] || fail "exr: no file"
+    [ -s "$out/exr.log" ] && fail "--quiet printed: $(cat "$out/exr.log")"
+    echo "ok   exr + flags"
+else
+    fail "exr: $(cat "$out/exr.log")"
+fi
+
+echo "$((cases - failures)) passed, $failures failed"
+[ "$failures" -eq 0 ]

@@ -1,0 +1,115 @@
+// The tile renderer on the real scenes: determinism, progress, cancellation, sane pixels.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "core/renderer.h"
+#include "core/scene_loader.h"
+#include "test_util.h"
+
+namespace rt {
+namespace {
+
+Scene load_small(const std::string& name, int w, int h) {
+    LoadedScene loaded = load_scene(test::scene_path(name));
+    loaded.scene.camera = loaded.scene.camera.resized(w, h);
+    loaded.scene.build();
+    return std::move(loaded.scene);
+}
+
+TEST(Render, SameBytesWhateverTheThreadCount) {
+    const Scene scene = load_small("whitted.json", 120, 90);
+    RenderOptions options;
+    options.threads = 1;
+    const Image one = render(scene, options);
+    for (int threads : {2, 3, 8}) {
+        options.threads = threads;
+        options.tile_size = threads == 3 ? 7 : 16;  // tile shape must not matter either
+        const Image many = render(scene, options);
+        ASSERT_EQ(one.pixels.size(), many.pixels.size());
+        EXPECT_EQ(0, std::memcmp(one.pixels.data(), many.pixels.data(), one.pixels.size() * sizeof(vec3)))
+            << threads << " threads";
+    }
+}
+
+TEST(Render, ProgressCountsEveryTileOnce) {
+    const Scene scene = load_small("tutorial.json", 100, 50);
+    RenderOptions options;
+    options.tile_size = 16;  // 7 x 4 tiles
+    int calls = 0, last = 0, total_seen = 0;
+    RenderStats stats;
+    render(scene, options, &stats, [&](int done, int total) {
+        ++calls;
+        EXPECT_EQ(done, last + 1);
+        last = done;
+        total_seen = total;
+    });
+    EXPECT_EQ(total_seen, 28);
+    EXPECT_EQ(calls, 28);
+    EXPECT_FALSE(stats.cancelled);
+    EXPECT_EQ(stats.rays.primary, 5000u);
+}
+
+TEST(Render, CancellationStopsTheWorkers) {
+    const Scene scene = load_small("whitted.json", 320, 240);
+    std::stop_source stop;
+    RenderOptions options;
+    options.tile_size = 8;
+    RenderStats stats;
+    int done_when_stopped = 0;
+    render(scene, options, &stats, [&](int done, int) {
+        if (done == 3) stop.request_stop();
+        done_when_stopped = done;
+    }, stop.get_token());
+    EXPECT_TRUE(stats.cancelled);
+    EXPECT_LT(done_when_stopped, 3 + 2 * 2);  // each worker finishes at most its current tile
+    EXPECT_LT(stats.rays.primary, 320u * 240u / 10u);
+}
+
+// Every scene in assets/scenes renders with no NaN or Inf, and is a picture, not a
+// flat or black image.
+TEST(Render, EveryAssetSceneGivesASanePicture) {
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(test::source_dir() / "assets/scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        ++scenes;
+        const Scene scene = load_small(entry.path().filename().string(), 64, 48);
+        RenderStats stats;
+        const Image image = render(scene, {}, &stats);
+        EXPECT_EQ(stats.nonfinite_pixels, 0u) << entry.path();
+        double sum = 0.0, sum_sq = 0.0;
+        for (const vec3& c : image.pixels) {
+            const double luma = 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+            sum += luma;
+            sum_sq += luma * luma;
+        }
+        const double n = static_cast<double>(image.pixels.size());
+        const double mean = sum / n, variance = sum_sq / n - mean * mean;
+        EXPECT_GT(mean, 0.05) << entry.path() << " is nearly black";
+        EXPECT_GT(variance, 1e-3) << entry.path() << " is flat";
+    }
+    EXPECT_GE(scenes, 4);
+}
+
+TEST(Render, DefaultSceneShowsShadowsReflectionAndRefraction) {
+    const Scene scene = load_small("whitted.json", 160, 120);
+    RenderStats stats;
+    render(scene, {}, &stats);
+    EXPECT_GT(stats.rays.shadow, 0u);
+    EXPECT_GT(stats.rays.reflected, 1000u);
+    EXPECT_GT(stats.rays.refracted, 1000u);
+
+    // Switched off, each kind of secondary ray disappears and the image changes.
+    RenderOptions plain;
+    plain.trace.shadows = plain.trace.reflections = plain.trace.refractions = false;
+    RenderStats plain_stats;
+    const Image a = render(scene, {}, nullptr);
+    const Image b = render(scene, plain, &plain_stats);
+    EXPECT_EQ(plain_stats.rays.total(), plain_stats.rays.primary);
+    int differing = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
+    EXPECT_GT(differing, static_cast<int>(a.pixels.size() / 10));
+}
+
+}  // namespace
+}  // namespace rt

@@ -1,0 +1,179 @@
+// Whitted shading on scenes whose right answer can be worked out by hand.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "core/renderer.h"
+#include "core/tracer.h"
+#include "test_util.h"
+
+namespace rt {
+namespace {
+
+void expect_colour(const vec3& got, const vec3& want, float tol = 1e-5f) {
+    EXPECT_NEAR(got.x, want.x, tol);
+    EXPECT_NEAR(got.y, want.y, tol);
+    EXPECT_NEAR(got.z, want.z, tol);
+}
+
+vec3 centre_pixel(const Scene& scene, const TraceOptions& options = {}) {
+    RayCounts counts;
+    return Tracer(scene, options).trace_primary(scene.camera.ray(scene.camera.cols / 2, scene.camera.rows / 2), counts);
+}
+
+TEST(Reflect, MirrorDirectionByHand) {
+    const vec3 d = reflect_dir({1, -1, 0}, {0, 1, 0});
+    expect_colour(d, {1, 1, 0});
+}
+
+TEST(Refract, SnellAtFortyFiveDegreesIntoGlass) {
+    const vec3 d = glm::normalize(vec3(1, -1, 0));
+    const Refraction r = refract_dir(d, {0, 1, 0}, 1.0f, 1.5f);
+    ASSERT_FALSE(r.total_internal_reflection);
+    const float sin_t = std::sin(glm::radians(45.0f)) / 1.5f;  // n1 sin i = n2 sin t
+    EXPECT_NEAR(r.dir.x, sin_t, 1e-6f);
+    EXPECT_NEAR(r.dir.y, -std::sqrt(1.0f - sin_t * sin_t), 1e-6f);
+    EXPECT_NEAR(glm::length(r.dir), 1.0f, 1e-6f);
+}
+
+TEST(Refract, NormalIncidenceGoesStraightThrough) {
+    const Refraction r = refract_dir({0, -1, 0}, {0, 1, 0}, 1.0f, 1.33f);
+    ASSERT_FALSE(r.total_internal_reflection);
+    expect_colour(r.dir, {0, -1, 0});
+}
+
+TEST(Refract, TotalInternalReflectionPastTheCriticalAngle) {
+    // Glass to air: critical angle asin(1/1.5) = 41.8 degrees.
+    const vec3 at45 = glm::normalize(vec3(1, -1, 0));
+    EXPECT_TRUE(refract_dir(at45, {0, 1, 0}, 1.5f, 1.0f).total_internal_reflection);
+    const vec3 at30{std::sin(glm::radians(30.0f)), -std::cos(glm::radians(30.0f)), 0};
+    const Refraction r = refract_dir(at30, {0, 1, 0}, 1.5f, 1.0f);
+    ASSERT_FALSE(r.total_internal_reflection);
+    EXPECT_NEAR(r.dir.x, 0.75f, 1e-6f);  // sin t = 1.5 sin 30
+}
+
+// A sphere lit from the eye: at the centre pixel n = l = v, so n.l = 1 and r.v = 1 and
+// I = ka Ia + (kd + ks) I_l.
+TEST(Phong, LitSphereCentreEqualsHandValue) {
+    Scene scene;
+    scene.camera = test::axis_camera({0, 0, 5});
+    scene.ambient = vec3(0.2f, 0.3f, 0.4f);
+    scene.materials.push_back(test::plain({0.5f, 0.4f, 0.3f}, {0.6f, 0.2f, 0.1f}, vec3(0.25f), 20.0f));
+    scene.lights.push_back(Light{Light::Type::kPoint, {0, 0, 5}, {}, {0.9f, 0.8f, 0.7f}});
+    scene.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
+    scene.build();
+    const vec3 expected = vec3(0.5f, 0.4f, 0.3f) * scene.ambient + (vec3(0.6f, 0.2f, 0.1f) + vec3(0.25f)) * vec3(0.9f, 0.8f, 0.7f);
+    expect_colour(centre_pixel(scene), expected);
+}
+
+TEST(Phong, DiffuseFollowsTheCosineOfTheLight) {
+    // Light at 60 degrees from the normal, no specular: I = kd cos 60 I_l.
+    Scene scene;
+    scene.camera = test::axis_camera({0, 0, 5});
+    scene.ambient = vec3(0.0f);
+    scene.materials.push_back(test::plain(vec3(0.0f), vec3(0.8f)));
+    scene.lights.push_back(Light{Light::Type::kDirectional, {}, glm::normalize(vec3(-std::sqrt(3.0f), 0, -1)), vec3(1.0f)});
+    scene.objects.push_back(Object{"wall", Plane{{0, 0, 1}, 0}, 0, {}});
+    scene.build();
+    expect_colour(centre_pixel(scene), vec3(0.4f));
+}
+
+// A ball hangs between a light and the floor: the floor point under it gets ka Ia only.
+Scene shadow_scene() {
+    Scene scene;
+    scene.camera = Camera::look_at({0, 4, 4}, {0, 0, 0}, {0, 1, 0}, 30.0f, 31, 31);
+    scene.ambient = vec3(0.3f);
+    scene.materials.push_back(test::plain(vec3(0.5f), vec3(0.7f)));
+    scene.lights.push_back(Light{Light::Type::kPoint, {0, 10, 0}, {}, vec3(1.0f)});
+    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
+    scene.objects.push_back(Object{"blocker", Sphere{{0, 5, 0}, 1}, 0, {}});
+    scene.build();
+    return scene;
+}
+
+TEST(Shadows, PointInShadowGetsAmbientOnly) {
+    const Scene scene = shadow_scene();
+    expect_colour(centre_pixel(scene), vec3(0.5f * 0.3f));
+    TraceOptions no_shadows;
+    no_shadows.shadows = false;  // the same point, lit: ambient plus kd n.l I_l with n.l = 1
+    expect_colour(centre_pixel(scene, no_shadows), vec3(0.5f * 0.3f + 0.7f));
+}
+
+TEST(Shadows, FeelerStopsAtThePointLight) {
+    // An occluder beyond the light casts no shadow: the feeler covers t in (0, 1) only.
+    Scene scene = shadow_scene();
+    std::get<Sphere>(scene.objects[1].shape).centre = {0, 12, 0};
+    scene.build();
+    expect_colour(centre_pixel(scene), vec3(0.5f * 0.3f + 0.7f));
+}
+
+// A mirror facing the camera shows exactly what is behind the camera: a wall lit by
+// ambient light only, of colour ka Ia.
+Scene mirror_scene(float reflectivity) {
+    Scene scene;
+    scene.camera = test::axis_camera({0, 0, 5});
+    scene.ambient = vec3(1.0f);
+    Material mirror = test::plain(vec3(0.0f), vec3(0.0f));
+    mirror.reflectivity = reflectivity;
+    scene.materials.push_back(mirror);
+    scene.materials.push_back(test::plain({0.2f, 0.5f, 0.7f}, vec3(0.0f)));
+    scene.objects.push_back(Object{"mirror", Plane{{0, 0, 1}, 0}, 0, {}});
+    scene.objects.push_back(Object{"wall", Plane{{0, 0, 1}, 20}, 1, {}});
+    scene.build();
+    return scene;
+}
+
+TEST(Reflection, MirrorShowsExactlyTheColourItFaces) {
+    expect_colour(centre_pixel(mirror_scene(1.0f)), {0.2f, 0.5f, 0.7f});
+    expect_colour(centre_pixel(mirror_scene(0.5f)), {0.1f, 0.25f, 0.35f});
+}
+
+TEST(Reflection, StopsAtMaxDepthBetweenTwoMirrors) {
+    Scene scene = mirror_scene(0.9f);
+    scene.materials[1] = scene.materials[0];  // two facing mirrors: an endless corridor
+    scene.build();
+    for (int depth : {0, 1, 3, 7}) {
+        TraceOptions options;
+        options.max_depth = depth;
+        options.min_weight = 0.0f;
+        RayCounts counts;
+        Tracer(scene, options).trace_primary(scene.camera.ray(15, 15), counts);
+        EXPECT_EQ(counts.reflected, static_cast<std::uint64_t>(depth)) << depth;
+    }
+}
+
+TEST(Reflection, StopsWhenTheWeightFallsUnderTheThreshold) {
+    Scene scene = mirror_scene(0.5f);
+    scene.materials[1] = scene.materials[0];
+    scene.build();
+    TraceOptions options;
+    options.max_depth = 50;
+    options.min_weight = 0.1f;  // 0.5^n >= 0.1 for n = 1..3
+    RayCounts counts;
+    Tracer(scene, options).trace_primary(scene.camera.ray(15, 15), counts);
+    EXPECT_EQ(counts.reflected, 3u);
+}
+
+TEST(Refraction, RayThroughAGlassBallCentreComesOutStraight) {
+    // Through the centre the ray meets both surfaces head-on and is not bent: the pixel
+    // shows the wall behind, weighted by the transparency at each of the two crossings.
+    Scene scene;
+    scene.camera = test::axis_camera({0, 0, 5});
+    scene.ambient = vec3(1.0f);
+    Material glass = test::plain(vec3(0.0f), vec3(0.0f));
+    glass.transparency = 0.8f;
+    glass.ior = 1.5f;
+    scene.materials.push_back(glass);
+    scene.materials.push_back(test::plain({0.9f, 0.6f, 0.3f}, vec3(0.0f)));
+    scene.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
+    scene.objects.push_back(Object{"wall", Plane{{0, 0, 1}, -10}, 1, {}});
+    scene.build();
+    RayCounts counts;
+    const vec3 c = Tracer(scene, {}).trace_primary(scene.camera.ray(15, 15), counts);
+    expect_colour(c, 0.64f * vec3(0.9f, 0.6f, 0.3f));
+    EXPECT_EQ(counts.refracted, 2u);
+}
+
+}  // namespace
+}  // namespace rt

@@ -1,0 +1,126 @@
+// The tutorial's intersection formulas against values computed by hand.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "core/shapes.h"
+
+namespace rt {
+namespace {
+
+TEST(Sphere, DiscriminantBelowZeroMisses) {
+    // Passes 2 units from the centre of a unit sphere.
+    const SphereRoots r = solve_sphere(Sphere{{0, 0, 0}, 1}, Ray{{-5, 2, 0}, {1, 0, 0}});
+    EXPECT_EQ(r.kind, SphereCase::kMiss);
+    EXPECT_FALSE(intersect(Sphere{{0, 0, 0}, 1}, Ray{{-5, 2, 0}, {1, 0, 0}}, kInfinity));
+}
+
+TEST(Sphere, DiscriminantZeroGrazesAndCountsAsMiss) {
+    // Tangent at (0, 1, 0): B^2 - 4AC = 4A(r^2 - 1) = 0 exactly.
+    const Ray ray{{-5, 1, 0}, {1, 0, 0}};
+    EXPECT_EQ(solve_sphere(Sphere{{0, 0, 0}, 1}, ray).kind, SphereCase::kGraze);
+    EXPECT_FALSE(intersect(Sphere{{0, 0, 0}, 1}, ray, kInfinity));
+}
+
+TEST(Sphere, DiscriminantAboveZeroGivesEntryAndExit) {
+    // eye (0,0,5), d (0,0,-1), r = 1: A = 1, B = -10, C = 24, t = (10 +- 2) / 2.
+    const Ray ray{{0, 0, 5}, {0, 0, -1}};
+    const SphereRoots r = solve_sphere(Sphere{{0, 0, 0}, 1}, ray);
+    ASSERT_EQ(r.kind, SphereCase::kTwoRoots);
+    EXPECT_FLOAT_EQ(r.t1, 4.0f);
+    EXPECT_FLOAT_EQ(r.t2, 6.0f);
+    EXPECT_FLOAT_EQ(*intersect(Sphere{{0, 0, 0}, 1}, ray, kInfinity), 4.0f);
+}
+
+TEST(Sphere, OffCentreWithUnnormalisedDirection) {
+    // Centre (1,2,3), r = 2, ray from (1,2,10) with d = (0,0,-2): hits z = 5 at t = 2.5.
+    const auto t = intersect(Sphere{{1, 2, 3}, 2}, Ray{{1, 2, 10}, {0, 0, -2}}, kInfinity);
+    ASSERT_TRUE(t);
+    EXPECT_FLOAT_EQ(*t, 2.5f);
+}
+
+TEST(Sphere, FromInsideTakesTheExitAndBehindIsNoHit) {
+    const Sphere s{{0, 0, 0}, 1};
+    EXPECT_FLOAT_EQ(*intersect(s, Ray{{0, 0, 0}, {0, 0, 1}}, kInfinity), 1.0f);
+    EXPECT_FALSE(intersect(s, Ray{{0, 0, 5}, {0, 0, 1}}, kInfinity));  // t < 0 only
+    EXPECT_FALSE(intersect(s, Ray{{0, 0, 5}, {0, 0, -1}}, 3.9f));      // beyond t_max
+}
+
+TEST(Sphere, DistantSmallSphereStillHitsAtTheRightDistance) {
+    // The naive B^2 - 4AC loses every digit here in float; the stable form does not.
+    const auto t = intersect(Sphere{{0, 0, -1e4f}, 0.01f}, Ray{{0, 0, 0}, {0, 0, -1}}, kInfinity);
+    ASSERT_TRUE(t);
+    EXPECT_NEAR(*t, 1e4f - 0.01f, 1e-2f);
+}
+
+TEST(Plane, TutorialFormula) {
+    // p.n = a with n = (0,1,0), a = -1; eye (0,3,0), d = (1,-2,0): t = (a - eye.n)/(d.n) = 2.
+    const auto t = intersect(Plane{{0, 1, 0}, -1}, Ray{{0, 3, 0}, {1, -2, 0}}, kInfinity);
+    ASSERT_TRUE(t);
+    EXPECT_FLOAT_EQ(*t, 2.0f);
+}
+
+TEST(Plane, ParallelAndBehindMiss) {
+    EXPECT_FALSE(intersect(Plane{{0, 1, 0}, 0}, Ray{{0, 1, 0}, {1, 0, 0}}, kInfinity));
+    EXPECT_FALSE(intersect(Plane{{0, 1, 0}, 0}, Ray{{0, 1, 0}, {0, 1, 0}}, kInfinity));
+}
+
+TEST(Triangle, InsideHitWithBarycentrics) {
+    const vec3 a{0, 0, 0}, b{4, 0, 0}, c{0, 4, 0};
+    const auto h = intersect_triangle(a, b, c, Ray{{1, 2, 5}, {0, 0, -1}}, kInfinity);
+    ASSERT_TRUE(h);
+    EXPECT_FLOAT_EQ(h->t, 5.0f);
+    EXPECT_FLOAT_EQ(h->b1, 0.25f);  // weight of b: x / 4
+    EXPECT_FLOAT_EQ(h->b2, 0.5f);   // weight of c: y / 4
+}
+
+TEST(Triangle, EachEdgeTestRejectsItsSide) {
+    const vec3 a{0, 0, 0}, b{4, 0, 0}, c{0, 4, 0};
+    EXPECT_FALSE(intersect_triangle(a, b, c, Ray{{1, -1, 5}, {0, 0, -1}}, kInfinity));  // below AB
+    EXPECT_FALSE(intersect_triangle(a, b, c, Ray{{3, 3, 5}, {0, 0, -1}}, kInfinity));   // past BC
+    EXPECT_FALSE(intersect_triangle(a, b, c, Ray{{-1, 1, 5}, {0, 0, -1}}, kInfinity));  // left of CA
+}
+
+TEST(Triangle, BothWindingsAndBothSidesHit) {
+    const vec3 a{0, 0, 0}, b{4, 0, 0}, c{0, 4, 0};
+    EXPECT_TRUE(intersect_triangle(a, c, b, Ray{{1, 1, 5}, {0, 0, -1}}, kInfinity));
+    EXPECT_TRUE(intersect_triangle(a, b, c, Ray{{1, 1, -5}, {0, 0, 1}}, kInfinity));
+}
+
+TEST(Triangle, EdgePointCountsAsInside) {
+    const auto h = intersect_triangle({0, 0, 0}, {4, 0, 0}, {0, 4, 0}, Ray{{2, 0, 1}, {0, 0, -1}}, kInfinity);
+    ASSERT_TRUE(h);
+    EXPECT_FLOAT_EQ(h->b2, 0.0f);
+}
+
+TEST(Triangle, ParallelAndDegenerateMiss) {
+    EXPECT_FALSE(intersect_triangle({0, 0, 0}, {4, 0, 0}, {0, 4, 0}, Ray{{1, 1, 1}, {1, 0, 0}}, kInfinity));
+    EXPECT_FALSE(intersect_triangle({0, 0, 0}, {1, 1, 0}, {2, 2, 0}, Ray{{1, 1, 1}, {0, 0, -1}}, kInfinity));
+}
+
+TEST(TangentFrame, OrthonormalForManyNormals) {
+    for (const vec3 n : {vec3(0, 1, 0), vec3(0, -1, 0), vec3(1, 0, 0), vec3(0, 0, -1),
+                         glm::normalize(vec3(1, 2, 3)), glm::normalize(vec3(-0.3f, -0.1f, 0.9f))}) {
+        vec3 t1, t2;
+        tangent_frame(n, t1, t2);
+        EXPECT_NEAR(glm::length(t1), 1.0f, 1e-5f);
+        EXPECT_NEAR(glm::length(t2), 1.0f, 1e-5f);
+        EXPECT_NEAR(glm::dot(t1, n), 0.0f, 1e-5f);
+        EXPECT_NEAR(glm::dot(t2, n), 0.0f, 1e-5f);
+        EXPECT_NEAR(glm::dot(t1, t2), 0.0f, 1e-5f);
+    }
+}
+
+TEST(RayOffset, MovesToTheRequestedSideAtEveryScale) {
+    for (float scale : {1e-3f, 1.0f, 1e4f}) {
+        const vec3 p{scale * 0.7f, scale * -1.3f, scale * 2.1f};
+        const vec3 n = glm::normalize(vec3(1, 2, -1));
+        const vec3 out = offset_ray_origin(p, n);
+        EXPECT_GT(glm::dot(out - p, n), 0.0f) << scale;
+        EXPECT_LT(glm::length(out - p), 1e-4f * scale + 1e-4f) << scale;  // small against the scale
+        EXPECT_LT(glm::dot(offset_ray_origin(p, -n) - p, n), 0.0f) << scale;
+    }
+}
+
+}  // namespace
+}  // namespace rt
