@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs what rtview needs from Debian 12's packages, and only what is missing.
+# Idempotent: a second run installs nothing and does not touch the network.
+set -euo pipefail
+
+packages=(
+  cmake g++ ninja-build git
+  libglm-dev                          # vector maths
+  libopenimageio-dev openimageio-tools  # image files and comparison (idiff)
+  nlohmann-json3-dev                  # scene files
+  libtinyobjloader-dev                # OBJ + MTL meshes
+  libcli11-dev                        # command lines
+  libgtest-dev                        # tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "setup: installing ${missing[*]}"
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "setup: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+  sudo=sudo
+fi
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
