@@ -89,6 +89,7 @@ Camera JsonSceneReader::read_camera(const JsonValue& j, int cols, int rows) cons
         if (std::fabs(glm::dot(cam.u, cam.v)) > 1e-3f || std::fabs(glm::dot(cam.u, cam.n)) > 1e-3f ||
             std::fabs(glm::dot(cam.v, cam.n)) > 1e-3f)
             j.fail("u, v and n must be orthogonal");
+        if (glm::dot(glm::cross(cam.u, cam.v), cam.n) < 0.0f) j.fail("u, v and n must be right-handed (u x v = n)");
         cam.cols = cols;
         cam.rows = rows;
     }

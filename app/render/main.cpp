@@ -4,12 +4,12 @@
 
 #include <unistd.h>
 
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <optional>
-#include <regex>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -40,10 +40,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 std::optional<std::pair<int, int>> parse_size(const std::string& text) {
-    static const std::regex pattern(R"((\d{1,5})[xX](\d{1,5}))");
-    std::smatch m;
-    if (!std::regex_match(text, m, pattern)) return std::nullopt;
-    const int w = std::stoi(m[1]), h = std::stoi(m[2]);
+    int w = 0, h = 0;
+    const char* end = text.data() + text.size();
+    const auto [x_at, ec1] = std::from_chars(text.data(), end, w);
+    if (ec1 != std::errc{} || x_at == end || (*x_at != 'x' && *x_at != 'X')) return std::nullopt;
+    const auto [h_end, ec2] = std::from_chars(x_at + 1, end, h);
+    if (ec2 != std::errc{} || h_end != end) return std::nullopt;
     if (w < 1 || h < 1 || w > 16384 || h > 16384) return std::nullopt;
     return std::make_pair(w, h);
 }
