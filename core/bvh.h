@@ -84,8 +84,8 @@ bool Bvh::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
                 continue;
             }
         }
-        // Pop, skipping boxes that a closer hit has since ruled out is left to the next
-        // slab test: popped nodes are tested again when their children are visited.
+        // A popped node may lie beyond a hit found since it was pushed; its children's
+        // slab tests, made against the shortened t_max, reject it then.
         if (top == 0) break;
         index = stack[--top];
     }
