@@ -45,6 +45,11 @@ glm::mat4 Camera::projection(float far_plane) const {
     return glm::frustum(-W, W, -H, H, N, far_plane);
 }
 
+glm::mat4 Camera::projection(float near_plane, float far_plane) const {
+    const float k = near_plane / N;
+    return glm::frustum(-W * k, W * k, -H * k, H * k, near_plane, far_plane);
+}
+
 Camera Camera::resized(int new_cols, int new_rows) const {
     Camera cam = *this;
     cam.cols = new_cols;

@@ -35,6 +35,9 @@ struct Camera {
     // projection = glFrustum(-W, W, -H, H, N, far).
     glm::mat4 view() const;
     glm::mat4 projection(float far_plane) const;
+    // The same frustum cut at another near plane: scaling -W, W, -H, H by near / N keeps
+    // every pixel's line of sight, so only depth clipping changes.
+    glm::mat4 projection(float near_plane, float far_plane) const;
 
     // The same view with another resolution: keeps N and H, sets W for square pixels.
     Camera resized(int new_cols, int new_rows) const;

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -16,28 +17,120 @@ int resolve_thread_count(int requested) {
 
 namespace {
 
-struct TileJob {
-    TileJob(const Scene& s, const RenderOptions& o, Image& im, int tx, int total)
-        : scene(s), tracer(s, o.trace), options(o), image(im), tiles_x(tx), tiles_total(total) {}
+struct Tile {
+    int x0, y0, x1, y1;
+};
 
-    const Scene& scene;
-    const Tracer tracer;
-    const RenderOptions& options;
-    Image& image;
-    int tiles_x, tiles_total;
-    std::atomic<int> next_tile{0};
-    std::atomic<std::uint64_t> nonfinite{0};
-    std::mutex merge_mutex;  // guards counts, done and the progress callback
+int tile_count(int width, int height, int size) { return ((width + size - 1) / size) * ((height + size - 1) / size); }
+
+// Runs `work(tile, counts)` over every tile on `threads` threads; returns false if
+// stopped before the end.
+class TileRunner {
+public:
+    // Progress is reported as part of `progress_total` tiles over all runs.
+    TileRunner(int width, int height, int tile_size, int threads, const ProgressFn& progress, int progress_total)
+        : width_(width), height_(height), size_(tile_size), threads_(threads), progress_(progress),
+          progress_total_(progress_total) {
+        tiles_x_ = (width + size_ - 1) / size_;
+        tiles_ = tile_count(width, height, size_);
+    }
+
+    template <class Work>
+    bool run(std::stop_token stop, RayCounts& counts, Work&& work) {
+        std::atomic<int> next{0};
+        int done = 0;
+        const auto worker = [&] {
+            RayCounts local;
+            for (int t; !stop.stop_requested() && (t = next.fetch_add(1)) < tiles_;) {
+                work(tile(t), local);
+                std::lock_guard lock(mutex_);
+                ++done;
+                ++progress_done_;  // across runs
+                if (progress_) progress_(progress_done_, progress_total_);
+            }
+            std::lock_guard lock(mutex_);
+            counts += local;
+        };
+        {
+            std::vector<std::jthread> pool;
+            for (int i = 1; i < std::min(threads_, tiles_); ++i) pool.emplace_back(worker);
+            worker();  // the calling thread is a worker too
+        }
+        return done == tiles_;
+    }
+
+private:
+    Tile tile(int t) const {
+        const int x0 = (t % tiles_x_) * size_, y0 = (t / tiles_x_) * size_;
+        return {x0, y0, std::min(x0 + size_, width_), std::min(y0 + size_, height_)};
+    }
+
+    int width_, height_, size_, threads_;
+    const ProgressFn& progress_;
+    int progress_total_;
+    int progress_done_ = 0;
+    int tiles_x_ = 0, tiles_ = 0;
+    std::mutex mutex_;
+};
+
+// The first hit along a camera ray, from the item buffer where it can be trusted.
+Hit primary_hit(const Scene& scene, const Ray& ray, const ItemBuffer* ib, int x, int y, bool& fell_back) {
+    Hit hit;
+    if (ib) {
+        const std::size_t i = ib->index(x, y);
+        const std::uint32_t id = ib->object[i];
+        if (ib->interior(x, y)) {
+            if (id == ItemBuffer::kEmpty) return hit;  // nothing here nor around it
+            if (scene.intersect_primitive(id - 1, ib->prim[i], ray, hit)) return hit;
+        }
+        fell_back = true;
+        hit = Hit{};
+    }
+    scene.intersect(ray, hit);
+    return hit;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats, const ProgressFn& progress,
+             std::stop_token stop, const ItemBuffer* item_buffer) {
+    const int width = scene.camera.cols, height = scene.camera.rows;
+    if (item_buffer && (item_buffer->width != width || item_buffer->height != height))
+        throw std::invalid_argument("render: the item buffer's size differs from the camera's");
+    const int threads = resolve_thread_count(options.threads);
+    Image image(width, height);
+    std::vector<Hit> hits(image.pixels.size());
+    std::atomic<std::uint64_t> fallbacks{0}, nonfinite{0};
     RayCounts counts;
-    int done = 0;
+    const int tile_size = std::max(1, options.tile_size);
+    const int tiles = tile_count(width, height, tile_size);
+    TileRunner runner(width, height, tile_size, threads, progress, 2 * tiles);
 
-    void render_tile(int tile, RayCounts& local) {
-        const int s = options.tile_size;
-        const int x0 = (tile % tiles_x) * s, y0 = (tile / tiles_x) * s;
-        const int x1 = std::min(x0 + s, image.width), y1 = std::min(y0 + s, image.height);
-        for (int y = y0; y < y1; ++y) {
-            for (int x = x0; x < x1; ++x) {
-                vec3 c = tracer.trace_primary(scene.camera.ray(x, y), local);
+    const auto start = std::chrono::steady_clock::now();
+    bool complete = runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
+        std::uint64_t fell = 0;
+        for (int y = t.y0; y < t.y1; ++y) {
+            for (int x = t.x0; x < t.x1; ++x) {
+                bool fell_back = false;
+                hits[static_cast<std::size_t>(y) * width + x] = primary_hit(scene, scene.camera.ray(x, y), item_buffer, x, y, fell_back);
+                fell += fell_back;
+                ++local.primary;
+            }
+        }
+        fallbacks.fetch_add(fell, std::memory_order_relaxed);
+    });
+    const double primary_seconds = seconds_since(start);
+
+    const Tracer tracer(scene, options.trace);
+    const auto shade_start = std::chrono::steady_clock::now();
+    complete = complete && runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
+        for (int y = t.y0; y < t.y1; ++y) {
+            for (int x = t.x0; x < t.x1; ++x) {
+                vec3 c = tracer.shade_hit(scene.camera.ray(x, y), hits[static_cast<std::size_t>(y) * width + x], local);
                 if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
                     nonfinite.fetch_add(1, std::memory_order_relaxed);
                     c = vec3(0.0f);
@@ -45,47 +138,17 @@ struct TileJob {
                 image.at(x, y) = c;
             }
         }
-    }
+    });
 
-    void work(std::stop_token stop, const ProgressFn& progress) {
-        RayCounts local;
-        for (int tile; !stop.stop_requested() && (tile = next_tile.fetch_add(1)) < tiles_total;) {
-            render_tile(tile, local);
-            std::lock_guard lock(merge_mutex);
-            ++done;
-            if (progress) progress(done, tiles_total);
-        }
-        std::lock_guard lock(merge_mutex);
-        counts += local;
-    }
-};
-
-}  // namespace
-
-Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats,
-             const ProgressFn& progress, std::stop_token stop) {
-    const auto start = std::chrono::steady_clock::now();
-    Image image(scene.camera.cols, scene.camera.rows);
-    const int s = std::max(1, options.tile_size);
-    const int tiles_x = (image.width + s - 1) / s;
-    const int tiles_y = (image.height + s - 1) / s;
-    RenderOptions opts = options;
-    opts.tile_size = s;
-    TileJob job(scene, opts, image, tiles_x, tiles_x * tiles_y);
-
-    const int thread_count = std::min(resolve_thread_count(options.threads), std::max(1, job.tiles_total));
-    {
-        std::vector<std::jthread> workers;
-        for (int i = 1; i < thread_count; ++i)
-            workers.emplace_back([&] { job.work(stop, progress); });
-        job.work(stop, progress);  // the calling thread is a worker too
-    }
     if (stats) {
-        stats->rays = job.counts;
-        stats->threads = thread_count;
-        stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        stats->nonfinite_pixels = job.nonfinite.load();
-        stats->cancelled = stop.stop_requested() && job.done < job.tiles_total;
+        stats->rays = counts;
+        stats->threads = std::min(threads, tiles);
+        stats->primary_seconds = primary_seconds;
+        stats->secondary_seconds = seconds_since(shade_start);
+        stats->seconds = seconds_since(start);
+        stats->nonfinite_pixels = nonfinite.load();
+        stats->item_buffer_fallbacks = fallbacks.load();
+        stats->cancelled = !complete;
     }
     return image;
 }

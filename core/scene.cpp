@@ -79,6 +79,21 @@ bool Scene::intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const
     return true;
 }
 
+bool Scene::intersect_primitive(std::uint32_t object, std::uint32_t prim, const Ray& r, Hit& hit) const {
+    if (object >= objects.size()) return false;
+    const Object& o = objects[object];
+    const auto* m = std::get_if<MeshRef>(&o.shape);
+    if (!m) return intersect_object(object, r, hit);
+    const TriangleMesh& mesh = meshes[m->mesh];
+    if (prim >= mesh.triangles.size()) return false;
+    const glm::uvec3 idx = mesh.triangles[prim];
+    const auto h = intersect_triangle(mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]],
+                                      object_ray(o, r), hit.t);
+    if (!h) return false;
+    hit = Hit{h->t, object, prim, h->b1, h->b2};
+    return true;
+}
+
 bool Scene::intersect(const Ray& r, Hit& hit) const {
     bool found = false;
     for (std::uint32_t i : unbounded_) found |= intersect_object(i, r, hit);

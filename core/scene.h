@@ -50,8 +50,10 @@ public:
     bool intersect(const Ray& r, Hit& hit) const;
     // Any hit in (0, t_max): the shadow feeler's question.
     bool occluded(const Ray& r, float t_max) const;
-    // One object alone (the item buffer hands the tracer an object to test).
+    // One object alone.
     bool intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const;
+    // One object, and of a mesh one triangle alone: what the item buffer names.
+    bool intersect_primitive(std::uint32_t object, std::uint32_t prim, const Ray& r, Hit& hit) const;
 
     SurfacePoint surface(const Ray& r, const Hit& hit) const;
 

@@ -24,8 +24,7 @@ vec3 Tracer::trace_primary(const Ray& r, RayCounts& counts) const {
     return shade(r, hit, 0, 1.0f, counts);
 }
 
-vec3 Tracer::shade_primary(const Ray& r, const Hit& hit, RayCounts& counts) const {
-    ++counts.primary;
+vec3 Tracer::shade_hit(const Ray& r, const Hit& hit, RayCounts& counts) const {
     return hit.found() ? shade(r, hit, 0, 1.0f, counts) : scene_.background;
 }
 

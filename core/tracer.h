@@ -49,8 +49,8 @@ public:
 
     // The colour seen along a camera ray (linear RGB).
     vec3 trace_primary(const Ray& r, RayCounts& counts) const;
-    // The same when the first hit is already known (from the item buffer, say).
-    vec3 shade_primary(const Ray& r, const Hit& hit, RayCounts& counts) const;
+    // The same when the camera ray's first hit is already known (a miss: background).
+    vec3 shade_hit(const Ray& r, const Hit& hit, RayCounts& counts) const;
 
     // The local Phong term at a surface point: ka Ia + sum over lights of
     // visible(p, l) (kd max(0, n.l) + ks max(0, r.v)^shininess) I_l.

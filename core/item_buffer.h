@@ -1,0 +1,41 @@
+#pragma once
+// What the raster side hands the tracer (Weghorst, Hooper & Greenberg 1984): for each
+// pixel, which object covers it first and which triangle of that object. Plain data:
+// the GL pass fills it, core reads it; core never sees GL.
+
+#include <cstdint>
+#include <vector>
+
+namespace rt {
+
+struct ItemBuffer {
+    static constexpr std::uint32_t kEmpty = 0;  // no object at this pixel
+
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint32_t> object;  // object index + 1, or kEmpty; bottom row first
+    std::vector<std::uint32_t> prim;    // triangle index within the object (meshes)
+
+    ItemBuffer() = default;
+    ItemBuffer(int w, int h)
+        : width(w), height(h), object(static_cast<std::size_t>(w) * h, kEmpty), prim(object.size(), 0) {}
+
+    std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
+
+    // True when every pixel of the 3x3 block around (x, y) (inside the image) names the
+    // same object: the pixel is not on a silhouette or where two objects meet, so the
+    // raster answer can be trusted for the analytic shapes too.
+    bool interior(int x, int y) const {
+        const std::uint32_t id = object[index(x, y)];
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int nx = x + dx, ny = y + dy;
+                if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+                if (object[index(nx, ny)] != id) return false;
+            }
+        }
+        return true;
+    }
+};
+
+}  // namespace rt

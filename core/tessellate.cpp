@@ -1,0 +1,63 @@
+#include "core/tessellate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+namespace rt {
+
+TriangleMesh tessellate_unit_sphere(int segments) {
+    const int slices = std::max(3, segments);
+    const int stacks = std::max(2, segments / 2);
+    TriangleMesh mesh;
+    mesh.name = "sphere" + std::to_string(slices);
+    const float pi = std::numbers::pi_v<float>;
+    for (int i = 0; i <= stacks; ++i) {
+        const float theta = pi * static_cast<float>(i) / static_cast<float>(stacks);
+        for (int j = 0; j <= slices; ++j) {
+            const float phi = 2.0f * pi * static_cast<float>(j) / static_cast<float>(slices);
+            mesh.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)});
+        }
+    }
+    const auto at = [&](int i, int j) { return static_cast<std::uint32_t>(i * (slices + 1) + j); };
+    for (int i = 0; i < stacks; ++i) {
+        for (int j = 0; j < slices; ++j) {
+            if (i > 0) mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+            if (i < stacks - 1) mesh.triangles.push_back({at(i, j + 1), at(i + 1, j), at(i + 1, j + 1)});
+        }
+    }
+    for (const auto& tri : mesh.triangles)
+        for (int k = 0; k < 3; ++k) mesh.corner_normals.push_back(mesh.positions[tri[k]]);
+    return mesh;
+}
+
+int sphere_segments_for(float radius_pixels) {
+    if (!(radius_pixels > 0.25f)) return 12;
+    const float n = std::numbers::pi_v<float> / std::acos(1.0f - 0.25f / radius_pixels);
+    return std::clamp(static_cast<int>(std::ceil(n)), 12, 256);
+}
+
+float projected_radius_pixels(const Camera& camera, const vec3& centre, float radius) {
+    const float depth = glm::dot(camera.eye - centre, camera.n);  // along the view axis
+    const float distance = glm::length(camera.eye - centre);
+    if (distance <= radius * 1.01f || depth <= radius) return 1e6f;  // around or behind the eye
+    const float pixels_per_unit = camera.N / (depth - radius) * static_cast<float>(camera.rows) / (2.0f * camera.H);
+    return radius * pixels_per_unit;
+}
+
+TriangleMesh plane_quad(const Plane& plane, const vec3& around, float extent) {
+    vec3 t1, t2;
+    tangent_frame(plane.normal, t1, t2);
+    const vec3 centre = around - (glm::dot(around, plane.normal) - plane.offset) * plane.normal;
+    TriangleMesh mesh;
+    mesh.name = "plane";
+    mesh.positions = {centre - extent * t1 - extent * t2, centre + extent * t1 - extent * t2,
+                      centre + extent * t1 + extent * t2, centre - extent * t1 + extent * t2};
+    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+    mesh.corner_normals.assign(6, plane.normal);
+    return mesh;
+}
+
+}  // namespace rt
