@@ -1,0 +1,35 @@
+#pragma once
+// Headless OpenGL contexts. Creating one makes it current on the calling thread and
+// loads the GL functions through it.
+
+#include <memory>
+#include <string>
+
+namespace rt::gl {
+
+enum class Backend { kAuto, kEgl, kOsmesa };
+
+class Context {
+public:
+    virtual ~Context() = default;
+    // "EGL surfaceless: llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6"
+    const std::string& description() const { return description_; }
+
+protected:
+    std::string description_;
+};
+
+// kAuto tries EGL first, then OSMesa. Throws rt::Error ("--gl: ...") when no context
+// can be made, saying why each attempt failed.
+std::unique_ptr<Context> create_headless_context(Backend backend);
+Backend parse_backend(const std::string& name);  // "egl", "osmesa", "auto"
+
+namespace detail {
+using ProcLoader = void* (*)(const char*);
+std::unique_ptr<Context> create_egl_context();     // throws std::runtime_error
+std::unique_ptr<Context> create_osmesa_context();  // throws std::runtime_error
+// Loads GL through `loader` into the current context; returns "RENDERER, VERSION".
+std::string load_gl(ProcLoader loader);
+}  // namespace detail
+
+}  // namespace rt::gl

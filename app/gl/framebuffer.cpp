@@ -1,0 +1,73 @@
+#include "app/gl/framebuffer.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/gl/debug.h"
+
+namespace rt::gl {
+
+Framebuffer::Framebuffer(Kind kind, int width, int height) : kind_(kind), width_(width), height_(height) {
+    glGenFramebuffers(1, &fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    const int attachments = kind == Kind::kColour ? 1 : 2;
+    glGenRenderbuffers(attachments, colour_);
+    for (int i = 0; i < attachments; ++i) {
+        glBindRenderbuffer(GL_RENDERBUFFER, colour_[i]);
+        glRenderbufferStorage(GL_RENDERBUFFER, kind == Kind::kColour ? GL_RGBA32F : GL_R32UI, width, height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), GL_RENDERBUFFER, colour_[i]);
+    }
+    glGenRenderbuffers(1, &depth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    const GLenum draw[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(attachments, draw);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("framebuffer incomplete (status " + std::to_string(status) + ")");
+    check("Framebuffer");
+}
+
+Framebuffer::~Framebuffer() {
+    glDeleteFramebuffers(1, &fbo_);
+    glDeleteRenderbuffers(2, colour_);
+    glDeleteRenderbuffers(1, &depth_);
+}
+
+void Framebuffer::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glViewport(0, 0, width_, height_);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    if (kind_ == Kind::kItemBuffer) {
+        const GLuint zero[4] = {0, 0, 0, 0};
+        glClearBufferuiv(GL_COLOR, 0, zero);
+        glClearBufferuiv(GL_COLOR, 1, zero);
+    }
+}
+
+Image Framebuffer::read_colour() const {
+    Image image(width_, height_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_RGB, GL_FLOAT, image.pixels.data());
+    check("read_colour");
+    return image;
+}
+
+ItemBuffer Framebuffer::read_item_buffer() const {
+    ItemBuffer ib(width_, height_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, ib.object.data());
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, ib.prim.data());
+    check("read_item_buffer");
+    return ib;
+}
+
+}  // namespace rt::gl

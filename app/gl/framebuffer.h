@@ -1,0 +1,38 @@
+#pragma once
+// Off-screen render targets at the tracer's resolution, and their read-back into
+// core's plain data (rt::Image, rt::ItemBuffer), bottom row first like GL.
+
+#include "app/gl/gl.h"
+#include "core/image.h"
+#include "core/item_buffer.h"
+
+namespace rt::gl {
+
+class Framebuffer {
+public:
+    enum class Kind {
+        kColour,     // one RGBA32F attachment: linear colour, read back unencoded
+        kItemBuffer  // two R32UI attachments: object id + 1, triangle index
+    };
+
+    Framebuffer(Kind kind, int width, int height);
+    ~Framebuffer();
+    Framebuffer(const Framebuffer&) = delete;
+    Framebuffer& operator=(const Framebuffer&) = delete;
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    void bind() const;  // as the draw target, with the viewport set and cleared
+
+    Image read_colour() const;
+    ItemBuffer read_item_buffer() const;
+
+private:
+    Kind kind_;
+    int width_, height_;
+    GLuint fbo_ = 0;
+    GLuint colour_[2] = {0, 0};
+    GLuint depth_ = 0;
+};
+
+}  // namespace rt::gl

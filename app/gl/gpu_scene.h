@@ -1,0 +1,72 @@
+#pragma once
+// The scene's geometry on the GPU, and the list of draws that shows it from a camera.
+// Meshes are uploaded once; spheres use a shared unit sphere at a level of detail
+// chosen per frame from their size on screen; planes are one unit quad, placed per
+// frame under the eye and scaled far past the horizon.
+
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "app/gl/gl.h"
+#include "core/scene.h"
+
+namespace rt::gl {
+
+class GpuMesh {
+public:
+    // Non-indexed triangles: position, shading normal and face normal per corner.
+    // With smooth_faces the face normal is the shading normal (analytic spheres).
+    explicit GpuMesh(const TriangleMesh& mesh, bool smooth_faces = false);
+    ~GpuMesh();
+    GpuMesh(const GpuMesh&) = delete;
+    GpuMesh& operator=(const GpuMesh&) = delete;
+
+    void draw(GLint first_vertex, GLsizei vertex_count) const;
+    GLsizei vertex_count() const { return vertex_count_; }
+
+private:
+    GLuint vao_ = 0, vbo_ = 0;
+    GLsizei vertex_count_ = 0;
+};
+
+struct DrawItem {
+    const GpuMesh* mesh = nullptr;
+    GLint first_vertex = 0;
+    GLsizei vertex_count = 0;
+    glm::mat4 model{1.0f};  // object space -> world (the object's transform)
+    glm::mat4 shape{1.0f};  // mesh vertices -> object space (sphere centre and radius, plane frame)
+    std::uint32_t material = 0;
+    std::uint32_t object_id = 0;  // object index + 1, as the item buffer stores it
+    std::uint32_t prim_base = 0;  // index of the draw's first triangle in its mesh
+    const Plane* plane = nullptr;  // for the checker's in-plane coordinates
+    bool sphere = false;           // the mesh is the unit sphere: normals are its positions
+};
+
+struct DepthRange {
+    float near_plane = 0.1f;
+    float far_plane = 1000.0f;
+};
+
+class GpuScene {
+public:
+    explicit GpuScene(const Scene& scene);
+    ~GpuScene();
+
+    std::vector<DrawItem> draw_list(const Camera& camera);
+    DepthRange depth_range(const Camera& camera) const;
+
+private:
+    const GpuMesh& sphere_level(float radius_pixels);
+    float plane_extent(const Camera& camera) const;
+    void add_mesh_draws(std::uint32_t object, const Object& o, const MeshRef& ref, std::vector<DrawItem>& out) const;
+
+    const Scene& scene_;
+    Aabb bounds_;
+    std::vector<std::unique_ptr<GpuMesh>> meshes_;                  // per scene mesh
+    std::map<std::uint32_t, std::unique_ptr<GpuMesh>> triangles_;  // per triangle object
+    std::map<int, std::unique_ptr<GpuMesh>> spheres_;              // per level of detail
+    std::unique_ptr<GpuMesh> quad_;
+};
+
+}  // namespace rt::gl

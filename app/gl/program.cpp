@@ -1,0 +1,109 @@
+#include "app/gl/program.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/error.h"
+
+namespace rt::gl {
+namespace {
+
+std::string read_source(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw Error(file.string(), "open", "cannot read the shader (is RTVIEW_SHADER_DIR right?)");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string info_log(GLuint object, bool is_program) {
+    GLint length = 0;
+    is_program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    is_program ? glGetProgramInfoLog(object, length, nullptr, log.data())
+               : glGetShaderInfoLog(object, length, nullptr, log.data());
+    return log.c_str();
+}
+
+// Mesa writes "0:12(5): error: syntax error, ..."; keep the first error as line and text.
+[[noreturn]] void compile_failed(const std::filesystem::path& file, const std::string& log) {
+    static const std::regex first_error(R"((\d+):(\d+)\((\d+)\): error: ([^\n]*))");
+    std::smatch m;
+    if (std::regex_search(log, m, first_error)) throw Error(file.string(), "line " + m[2].str(), m[4].str());
+    const std::string first_line = log.substr(0, log.find('\n'));
+    throw Error(file.string(), "compile", first_line.empty() ? "the shader does not compile" : first_line);
+}
+
+GLuint compile(GLenum stage, const std::filesystem::path& file) {
+    const std::string source = read_source(file);
+    const GLuint shader = glCreateShader(stage);
+    const char* text = source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        const std::string log = info_log(shader, false);
+        glDeleteShader(shader);
+        compile_failed(file, log);
+    }
+    return shader;
+}
+
+}  // namespace
+
+std::filesystem::path shader_dir() {
+    if (const char* env = std::getenv("RTVIEW_SHADER_DIR"); env && *env) return env;
+    return RTVIEW_SHADER_DIR;
+}
+
+Program::Program(const std::filesystem::path& vertex_file, const std::filesystem::path& fragment_file) {
+    const GLuint vs = compile(GL_VERTEX_SHADER, vertex_file);
+    GLuint fs = 0;
+    try {
+        fs = compile(GL_FRAGMENT_SHADER, fragment_file);
+    } catch (...) {
+        glDeleteShader(vs);
+        throw;
+    }
+    id_ = glCreateProgram();
+    glAttachShader(id_, vs);
+    glAttachShader(id_, fs);
+    glLinkProgram(id_);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        const std::string log = info_log(id_, true);
+        glDeleteProgram(id_);
+        throw Error(fragment_file.string(), "link", log.substr(0, log.find('\n')));
+    }
+}
+
+Program::~Program() { glDeleteProgram(id_); }
+
+GLint Program::location(const char* name) {
+    const auto it = locations_.find(name);
+    if (it != locations_.end()) return it->second;
+    const GLint at = glGetUniformLocation(id_, name);  // -1 (ignored by glUniform) if optimised away
+    locations_.emplace(name, at);
+    return at;
+}
+
+void Program::set(const char* name, int value) { glUniform1i(location(name), value); }
+void Program::set(const char* name, unsigned value) { glUniform1ui(location(name), value); }
+void Program::set(const char* name, float value) { glUniform1f(location(name), value); }
+void Program::set(const char* name, const glm::vec3& value) { glUniform3fv(location(name), 1, glm::value_ptr(value)); }
+void Program::set(const char* name, const glm::mat3& value) {
+    glUniformMatrix3fv(location(name), 1, GL_FALSE, glm::value_ptr(value));
+}
+void Program::set(const char* name, const glm::mat4& value) {
+    glUniformMatrix4fv(location(name), 1, GL_FALSE, glm::value_ptr(value));
+}
+
+}  // namespace rt::gl

@@ -1,0 +1,114 @@
+#include "app/gl/raster_renderer.h"
+
+#include <string>
+
+#include <glm/matrix.hpp>
+
+#include "app/gl/debug.h"
+
+namespace rt::gl {
+
+RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& shaders)
+    : scene_(scene),
+      gpu_(scene),
+      phong_(shaders / "raster.vert", shaders / "phong.frag"),
+      ids_(shaders / "raster.vert", shaders / "itembuffer.frag") {}
+
+void RasterRenderer::set_camera(Program& program, const Camera& camera) {
+    const DepthRange depth = gpu_.depth_range(camera);
+    program.use();
+    program.set("u_view_projection", camera.projection(depth.near_plane, depth.far_plane) * camera.view());
+    program.set("u_eye", camera.eye);
+}
+
+void RasterRenderer::set_object(Program& program, const DrawItem& item, const Camera& camera) {
+    const glm::mat4 to_world = item.model * item.shape;
+    if (item.sphere) program.set("u_eye_local", glm::vec3(glm::inverse(to_world) * glm::vec4(camera.eye, 1.0f)));
+    program.set("u_model", item.model);
+    program.set("u_shape", item.shape);
+    program.set("u_normal_matrix", glm::transpose(glm::inverse(glm::mat3(to_world))));
+}
+
+void RasterRenderer::set_material(const Material& m, const DrawItem& item) {
+    phong_.set("u_ka", m.ka);
+    phong_.set("u_kd", m.kd);
+    phong_.set("u_ks", m.ks);
+    phong_.set("u_shininess", m.shininess);
+    phong_.set("u_checker", m.checker ? 1 : 0);
+    if (m.checker) {
+        phong_.set("u_checker_a", m.checker->colour_a);
+        phong_.set("u_checker_b", m.checker->colour_b);
+        phong_.set("u_checker_scale", m.checker->scale);
+    }
+    phong_.set("u_plane", item.plane ? 1 : 0);
+    phong_.set("u_sphere", item.sphere ? 1 : 0);
+    if (item.plane) {
+        glm::vec3 t1, t2;
+        tangent_frame(item.plane->normal, t1, t2);
+        phong_.set("u_plane_t1", t1);
+        phong_.set("u_plane_t2", t2);
+    }
+}
+
+void RasterRenderer::draw(const Camera& camera) {
+    set_camera(phong_, camera);
+    phong_.set("u_ambient", scene_.ambient);
+    const int lights = std::min(static_cast<int>(scene_.lights.size()), kMaxLights);
+    phong_.set("u_light_count", lights);
+    for (int i = 0; i < lights; ++i) {
+        const Light& l = scene_.lights[static_cast<std::size_t>(i)];
+        const std::string at = "[" + std::to_string(i) + "]";
+        const bool directional = l.type == Light::Type::kDirectional;
+        phong_.set(("u_light_directional" + at).c_str(), directional ? 1 : 0);
+        phong_.set(("u_light_vector" + at).c_str(), directional ? l.direction : l.position);
+        phong_.set(("u_light_colour" + at).c_str(), l.colour);
+    }
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);  // surfaces are two-sided, as in the tracer
+    for (const DrawItem& item : gpu_.draw_list(camera)) {
+        set_object(phong_, item, camera);
+        set_material(scene_.materials[item.material], item);
+        item.mesh->draw(item.first_vertex, item.vertex_count);
+    }
+    check("RasterRenderer::draw");
+}
+
+void RasterRenderer::draw_ids(const Camera& camera) {
+    set_camera(ids_, camera);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    for (const DrawItem& item : gpu_.draw_list(camera)) {
+        set_object(ids_, item, camera);
+        ids_.set("u_object_id", item.object_id);
+        ids_.set("u_prim_base", item.prim_base);
+        item.mesh->draw(item.first_vertex, item.vertex_count);
+    }
+    check("RasterRenderer::draw_ids");
+}
+
+Framebuffer& RasterRenderer::target(std::unique_ptr<Framebuffer>& fb, Framebuffer::Kind kind, const Camera& camera) {
+    if (!fb || fb->width() != camera.cols || fb->height() != camera.rows)
+        fb = std::make_unique<Framebuffer>(kind, camera.cols, camera.rows);
+    return *fb;
+}
+
+Image RasterRenderer::render(const Camera& camera) {
+    Framebuffer& fb = target(colour_target_, Framebuffer::Kind::kColour, camera);
+    fb.bind();
+    const glm::vec3 bg = scene_.background;
+    glClearColor(bg.x, bg.y, bg.z, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    draw(camera);
+    return fb.read_colour();
+}
+
+ItemBuffer RasterRenderer::render_item_buffer(const Camera& camera) {
+    Framebuffer& fb = target(id_target_, Framebuffer::Kind::kItemBuffer, camera);
+    fb.bind();
+    draw_ids(camera);
+    return fb.read_item_buffer();
+}
+
+}  // namespace rt::gl

@@ -1,0 +1,48 @@
+#pragma once
+// The classic pipeline: the same rt::Scene drawn with per-fragment Phong in GLSL, from
+// the same camera (core's view and projection), with the same materials and lights,
+// and no shadows, reflection or refraction. Also the item-buffer pass.
+
+#include <filesystem>
+#include <memory>
+
+#include "app/gl/framebuffer.h"
+#include "app/gl/gpu_scene.h"
+#include "app/gl/program.h"
+#include "core/image.h"
+#include "core/item_buffer.h"
+#include "core/scene.h"
+
+namespace rt::gl {
+
+class RasterRenderer {
+public:
+    static constexpr int kMaxLights = 16;  // as in shaders/phong.frag
+
+    // Needs a current GL context; throws rt::Error on a shader that is missing or broken.
+    explicit RasterRenderer(const Scene& scene, const std::filesystem::path& shaders = shader_dir());
+
+    // Off-screen at the camera's resolution, read back: linear RGB, bottom row first.
+    Image render(const Camera& camera);
+    // Object id + 1 and triangle index per pixel, read back.
+    ItemBuffer render_item_buffer(const Camera& camera);
+
+    // The same two passes into whatever framebuffer is bound (the viewer's window).
+    void draw(const Camera& camera);
+    void draw_ids(const Camera& camera);
+
+private:
+    void set_camera(Program& program, const Camera& camera);
+    void set_material(const Material& m, const DrawItem& item);
+    void set_object(Program& program, const DrawItem& item, const Camera& camera);
+    Framebuffer& target(std::unique_ptr<Framebuffer>& fb, Framebuffer::Kind kind, const Camera& camera);
+
+    const Scene& scene_;
+    GpuScene gpu_;
+    Program phong_;
+    Program ids_;
+    std::unique_ptr<Framebuffer> colour_target_;
+    std::unique_ptr<Framebuffer> id_target_;
+};
+
+}  // namespace rt::gl

@@ -1,0 +1,30 @@
+#version 330 core
+// Shared by the colour pass (phong.frag) and the item-buffer pass (itembuffer.frag).
+// Positions go mesh -> object space (u_shape: a sphere's centre and radius, a plane's
+// frame) -> world (u_model: the object's transform) -> clip (core's Camera matrices).
+
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;       // shading normal
+layout(location = 2) in vec3 a_face_normal;  // geometric normal
+
+uniform mat4 u_shape;
+uniform mat4 u_model;
+uniform mat3 u_normal_matrix;  // inverse transpose of mat3(u_model * u_shape)
+uniform mat4 u_view_projection;
+
+out vec3 v_local;   // the mesh's own coordinates (on a unit sphere: the normal)
+out vec3 v_world;
+out vec3 v_object;  // where the checker is evaluated, as in the tracer
+out vec3 v_normal;
+out vec3 v_face_normal;  // the same at all three corners of a mesh triangle
+
+void main() {
+    vec4 object = u_shape * vec4(a_position, 1.0);
+    vec4 world = u_model * object;
+    v_local = a_position;
+    v_object = object.xyz;
+    v_world = world.xyz;
+    v_normal = u_normal_matrix * a_normal;
+    v_face_normal = u_normal_matrix * a_face_normal;
+    gl_Position = u_view_projection * world;
+}
