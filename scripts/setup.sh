@@ -11,6 +11,9 @@ packages=(
   libtinyobjloader-dev                # OBJ + MTL meshes
   libcli11-dev                        # command lines
   libgtest-dev                        # tests
+  python3-glad                        # generates the OpenGL loader at build time
+  libegl-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL on Mesa (llvmpipe)
+  libosmesa6-dev                      # headless OSMesa
 )
 
 missing=()

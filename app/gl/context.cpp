@@ -8,11 +8,11 @@
 
 namespace rt::gl {
 
-Backend parse_backend(const std::string& name) {
+Backend parse_backend(const std::string& name, const std::string& program) {
     if (name == "egl") return Backend::kEgl;
     if (name == "osmesa") return Backend::kOsmesa;
     if (name == "auto") return Backend::kAuto;
-    throw Error("rtview", "--gl", "unknown GL back-end \"" + name + "\" (expected egl, osmesa or auto)");
+    throw Error(program, "--gl", "unknown GL back-end \"" + name + "\" (expected egl, osmesa or auto)");
 }
 
 namespace detail {
@@ -31,7 +31,7 @@ std::string load_gl(ProcLoader loader) {
 
 }  // namespace detail
 
-std::unique_ptr<Context> create_headless_context(Backend backend) {
+std::unique_ptr<Context> create_headless_context(Backend backend, const std::string& program) {
     std::string failures;
     if (backend == Backend::kEgl || backend == Backend::kAuto) {
         try {
@@ -47,7 +47,7 @@ std::unique_ptr<Context> create_headless_context(Backend backend) {
             failures += (failures.empty() ? "" : "; ") + std::string("OSMesa: ") + e.what();
         }
     }
-    throw Error("rtview", "--gl", "cannot create an OpenGL context (" + failures + ")");
+    throw Error(program, "--gl", "cannot create an OpenGL context (" + failures + ")");
 }
 
 }  // namespace rt::gl

@@ -19,10 +19,10 @@ protected:
     std::string description_;
 };
 
-// kAuto tries EGL first, then OSMesa. Throws rt::Error ("--gl: ...") when no context
-// can be made, saying why each attempt failed.
-std::unique_ptr<Context> create_headless_context(Backend backend);
-Backend parse_backend(const std::string& name);  // "egl", "osmesa", "auto"
+// kAuto tries EGL first, then OSMesa. Throws rt::Error ("PROGRAM: --gl: ...") when no
+// context can be made, saying why each attempt failed.
+std::unique_ptr<Context> create_headless_context(Backend backend, const std::string& program);
+Backend parse_backend(const std::string& name, const std::string& program);  // "egl", "osmesa", "auto"
 
 namespace detail {
 using ProcLoader = void* (*)(const char*);

@@ -15,7 +15,8 @@ std::atomic<std::uint64_t> g_errors{0};
 
 void GLAD_API_PTR on_debug_message(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei,
                                    const GLchar* message, const void*) {
-    if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
+    // Compile errors become rt::Error from Program, with the file name: not repeated here.
+    if (severity == GL_DEBUG_SEVERITY_NOTIFICATION || source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     const bool error = type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR;
     if (error) g_errors.fetch_add(1);
     std::fprintf(stderr, "GL debug: %s (source 0x%x, type 0x%x, id %u): %s\n", error ? "error" : "warning", source, type,

@@ -17,7 +17,7 @@ check() {
     shift 3
     cases=$((cases + 1))
     local status=0
-    timeout 10 "$rtrender" "$@" -o "$work/out.png" >"$work/stdout" 2>"$work/stderr" || status=$?
+    timeout 20 "$rtrender" "$@" -o "$work/out.png" >"$work/stdout" 2>"$work/stderr" || status=$?
     local lines
     lines=$(wc -l <"$work/stderr")
     local message
@@ -55,6 +55,14 @@ check "--threads 0" "rtrender" -- "$scene" --threads 0
 check "--max-depth -1" "rtrender" -- "$scene" --max-depth -1
 check "unknown flag" "rtrender" -- "$scene" --shadows-please
 check "directory as scene" "$corpus" -- "$corpus"
+check "--gl nonsense" "rtrender" -- "$scene" --mode raster --gl nonsense
+# No EGL vendor library: EGL cannot start, and --gl egl allows no fallback.
+export __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json
+check "no EGL" "rtrender" -- "$scene" --mode raster --gl egl
+unset __EGL_VENDOR_LIBRARY_FILENAMES
+export RTVIEW_SHADER_DIR=/nonexistent/shaders
+check "missing shaders" "/nonexistent/shaders/raster.vert" -- "$scene" --mode raster
+unset RTVIEW_SHADER_DIR
 status=0
 timeout 10 "$rtrender" "$scene" -o "$work/out.bmp" 2>"$work/stderr" || status=$?
 cases=$((cases + 1))

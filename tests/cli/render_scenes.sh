@@ -20,7 +20,7 @@ for scene in "$assets"/scenes/*.json "$assets"/models/teapot.obj; do
         fail "$name: exit status $?: $(cat "$out/$name.log")"
         continue
     fi
-    grep -q "^$out/$name.png: 96x72" "$out/$name.log" || fail "$name: summary line missing: $(cat "$out/$name.log")"
+    grep -q "^wrote $out/$name.png (96x72)" "$out/$name.log" || fail "$name: no 'wrote' line: $(cat "$out/$name.log")"
     [ -s "$out/$name.png" ] || fail "$name: no PNG written"
     for key in width height threads load_seconds build_seconds trace_seconds primary shadow reflected refracted mrays_per_s; do
         grep -q "\"$key\"" "$out/$name.stats.json" || fail "$name: stats lack \"$key\""
@@ -38,6 +38,22 @@ if "$rtrender" "$assets/scenes/tutorial.json" --size 64x48 -o "$out/tutorial.exr
     echo "ok   exr + flags"
 else
     fail "exr: $(cat "$out/exr.log")"
+fi
+
+# Both pipelines and the item buffer: three images, the comparison, the timings.
+cases=$((cases + 1))
+if "$rtrender" "$assets/scenes/whitted.json" --mode both --item-buffer on --size 120x90 -o "$out/both.png" \
+        --stats "$out/both.json" >"$out/both.log" 2>&1; then
+    for f in both.raster.png both.trace.png both.diff.png; do [ -s "$out/$f" ] || fail "both: no $f"; done
+    for key in raster_seconds item_buffer_seconds primary_seconds secondary_seconds item_buffer_disagreements \
+               reference_primary_seconds mean_abs_error rms psnr_db share_over_threshold; do
+        grep -q "\"$key\"" "$out/both.json" || fail "both: stats lack \"$key\""
+    done
+    grep -q "raster vs traced: mean abs error" "$out/both.log" || fail "both: no comparison printed"
+    grep -q "pixels disagree" "$out/both.log" || fail "both: no item-buffer report"
+    echo "ok   both + item buffer"
+else
+    fail "both: $(cat "$out/both.log")"
 fi
 
 echo "$((cases - failures)) passed, $failures failed"

@@ -1,0 +1,152 @@
+// The raster pipeline on a real headless GL context (EGL and OSMesa, each test run on
+// both): it agrees with the tracer where it should, its item buffer is right and saves
+// nothing it should not, and GL never reports an error.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "app/gl/context.h"
+#include "app/gl/debug.h"
+#include "app/gl/raster_renderer.h"
+#include "core/compare.h"
+#include "core/error.h"
+#include "core/renderer.h"
+#include "core/scene_loader.h"
+#include "../unit/test_util.h"
+
+namespace rt {
+namespace {
+
+class Gl : public ::testing::TestWithParam<gl::Backend> {
+protected:
+    void SetUp() override { context_ = gl::create_headless_context(GetParam(), "rt_gl_tests"); }
+    void TearDown() override {
+        EXPECT_EQ(gl::debug_error_count(), errors_before_) << "KHR_debug reported GL errors";
+    }
+
+    static Scene load(const std::string& name, int w, int h) {
+        LoadedScene loaded = load_scene(test::scene_path(name));
+        loaded.scene.camera = loaded.scene.camera.resized(w, h);
+        loaded.scene.build();
+        return std::move(loaded.scene);
+    }
+
+    std::unique_ptr<gl::Context> context_;
+    std::uint64_t errors_before_ = gl::debug_error_count();
+};
+
+TEST_P(Gl, ContextIsCoreProfile33OrLater) {
+    EXPECT_NE(context_->description().find("OpenGL"), std::string::npos) << context_->description();
+    EXPECT_TRUE(gl::debug_output_requested()) << "the tests run with RTVIEW_GL_DEBUG=1";
+}
+
+const char* const kScenes[] = {"tutorial.json", "whitted.json", "cornell.json", "many_spheres.json"};
+
+// With shadows, reflection and refraction off, the tracer computes exactly what the
+// raster pipeline computes. Inside objects (away from any edge in the item buffer) the
+// two must agree to a rounding; only silhouettes, where a tessellated sphere and the
+// true sphere cover different pixels, may differ.
+TEST_P(Gl, RasterEqualsLocalTracingAwayFromSilhouettes) {
+    for (const char* name : kScenes) {
+        const Scene scene = load(name, 200, 150);
+        gl::RasterRenderer raster(scene);
+        const Image r = raster.render(scene.camera);
+        const ItemBuffer ib = raster.render_item_buffer(scene.camera);
+        RenderOptions options;
+        options.trace.shadows = options.trace.reflections = options.trace.refractions = false;
+        const Image t = render(scene, options);
+
+        std::size_t interior = 0, interior_off = 0;
+        for (int y = 0; y < r.height; ++y) {
+            for (int x = 0; x < r.width; ++x) {
+                if (!ib.interior(x, y)) continue;
+                ++interior;
+                const vec3 a = r.at(x, y), b = t.at(x, y);
+                float d = 0.0f;
+                for (int k = 0; k < 3; ++k) d = std::max(d, std::fabs(srgb_encode(a[k]) - srgb_encode(b[k])));
+                interior_off += d > 2.0f / 255.0f;
+            }
+        }
+        const ImageDiff all = compare_images(r, t);
+        EXPECT_GT(interior, r.pixels.size() / 2) << name;
+        // A few checker cells flip where the floor meets the horizon, at float precision.
+        EXPECT_LE(static_cast<double>(interior_off), 1e-3 * static_cast<double>(interior)) << name;
+        EXPECT_LT(all.share_over, 0.03) << name << ": silhouettes only";
+        EXPECT_GT(all.psnr_db, 25.0) << name;
+    }
+}
+
+TEST_P(Gl, ItemBufferNamesTheObjectAtEachPixel) {
+    const Scene scene = load("tutorial.json", 120, 90);
+    gl::RasterRenderer raster(scene);
+    const ItemBuffer ib = raster.render_item_buffer(scene.camera);
+    std::size_t checked = 0;
+    for (int y = 0; y < ib.height; y += 2) {
+        for (int x = 0; x < ib.width; x += 2) {
+            if (!ib.interior(x, y)) continue;
+            Hit hit;
+            scene.intersect(scene.camera.ray(x, y), hit);
+            const std::uint32_t expected = hit.found() ? hit.object + 1 : ItemBuffer::kEmpty;
+            EXPECT_EQ(ib.object[ib.index(x, y)], expected) << x << "," << y;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 2000u);
+}
+
+TEST_P(Gl, ItemBufferNamesTheTriangleOfAMesh) {
+    const Scene scene = load("cornell.json", 96, 96);
+    gl::RasterRenderer raster(scene);
+    const ItemBuffer ib = raster.render_item_buffer(scene.camera);
+    int same = 0, interior = 0;
+    for (int y = 0; y < ib.height; ++y) {
+        for (int x = 0; x < ib.width; ++x) {
+            if (!ib.interior(x, y) || ib.object[ib.index(x, y)] == ItemBuffer::kEmpty) continue;
+            Hit hit;
+            scene.intersect(scene.camera.ray(x, y), hit);
+            ++interior;
+            same += hit.prim == ib.prim[ib.index(x, y)];
+        }
+    }
+    // Within one object, neighbouring triangles of a quad share an edge the item
+    // buffer does not mark; so a handful of pixels may name the neighbour.
+    EXPECT_GT(same, interior * 99 / 100);
+}
+
+TEST_P(Gl, ItemBufferImagesAgreeWithFullTraversal) {
+    for (const char* name : kScenes) {
+        const Scene scene = load(name, 200, 150);
+        gl::RasterRenderer raster(scene);
+        const ItemBuffer ib = raster.render_item_buffer(scene.camera);
+        RenderStats with, without;
+        const Image a = render(scene, {}, &with, {}, {}, &ib);
+        const Image b = render(scene, {}, &without);
+        const ImageDiff d = compare_images(a, b, 1.5 / 255.0);
+        EXPECT_LE(d.share_over, 0.001) << name << ": " << d.pixels_over << " pixels disagree";
+        EXPECT_LT(with.item_buffer_fallbacks, a.pixels.size() / 2) << name;
+        EXPECT_EQ(with.rays.primary, without.rays.primary);
+    }
+}
+
+TEST_P(Gl, BrokenShaderIsALocatedError) {
+    const auto dir = test::temp_dir(std::string("shaders_") + (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
+    for (const char* f : {"raster.vert", "itembuffer.frag"})
+        std::filesystem::copy_file(gl::shader_dir() / f, dir / f);
+    test::write_file(dir / "phong.frag", "#version 330 core\nout vec4 c;\nvoid main() {\n  c = vec4(1.0) +;\n}\n");
+    const Scene scene = load("tutorial.json", 32, 32);
+    try {
+        gl::RasterRenderer raster(scene, dir);
+        FAIL() << "compiled";
+    } catch (const Error& e) {
+        EXPECT_NE(e.file().find("phong.frag"), std::string::npos) << e.what();
+        EXPECT_EQ(e.where(), "line 4") << e.what();
+    }
+    std::filesystem::remove(dir / "phong.frag");
+    EXPECT_THROW(gl::RasterRenderer(scene, dir), Error);  // missing
+}
+
+INSTANTIATE_TEST_SUITE_P(Headless, Gl, ::testing::Values(gl::Backend::kEgl, gl::Backend::kOsmesa),
+                         [](const auto& param_info) { return param_info.param == gl::Backend::kEgl ? "egl" : "osmesa"; });
+
+}  // namespace
+}  // namespace rt
