@@ -17,6 +17,14 @@
 namespace rt {
 namespace {
 
+}  // namespace
+
+namespace gl {
+void PrintTo(Backend b, std::ostream* os) { *os << (b == Backend::kEgl ? "EGL" : b == Backend::kOsmesa ? "OSMesa" : "auto"); }
+}  // namespace gl
+
+namespace {
+
 class Gl : public ::testing::TestWithParam<gl::Backend> {
 protected:
     void SetUp() override { context_ = gl::create_headless_context(GetParam(), "rt_gl_tests"); }
