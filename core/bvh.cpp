@@ -34,7 +34,8 @@ struct Builder {
             std::array<std::uint32_t, kBins> bin_count{};
             for (std::uint32_t i = begin; i < end; ++i) {
                 const std::uint32_t p = prims[i];
-                const int b = std::min(kBins - 1, static_cast<int>((centres[p][axis] - lo) * scale));
+                const int b =
+                    std::min(kBins - 1, static_cast<int>((centres[p][axis] - lo) * scale));
                 bin_box[b].grow(boxes[p]);
                 ++bin_count[b];
             }
@@ -83,9 +84,9 @@ struct Builder {
         if (split.axis < 0 || (split_cost >= leaf_cost && count <= kMaxLeafSize))
             return make_leaf(node, begin, end);
 
-        auto middle = std::partition(prims.begin() + begin, prims.begin() + end, [&](std::uint32_t p) {
-            return centres[p][split.axis] < split.position;
-        });
+        auto middle = std::partition(
+            prims.begin() + begin, prims.begin() + end,
+            [&](std::uint32_t p) { return centres[p][split.axis] < split.position; });
         auto mid = static_cast<std::uint32_t>(middle - prims.begin());
         if (mid == begin || mid == end) mid = begin + count / 2;  // rounding put all on one side
 

@@ -23,7 +23,7 @@ struct BvhNode {
 static_assert(sizeof(BvhNode) == 32, "BVH nodes are meant to be 32 bytes");
 
 class Bvh {
-public:
+  public:
     static constexpr int kMaxDepth = 60;  // the traversal stack is sized from this
 
     void build(std::span<const Aabb> prim_boxes);
@@ -41,7 +41,7 @@ public:
     template <bool kAnyHit, class HitPrim>
     bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const;
 
-private:
+  private:
     std::vector<BvhNode> nodes_;
     std::vector<std::uint32_t> prims_;
 };
@@ -69,8 +69,10 @@ bool Bvh::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
         } else {
             const std::uint32_t left = index + 1;
             const std::uint32_t right = node.first;
-            const float t_left = slab_entry({nodes_[left].lo, nodes_[left].hi}, ray.origin, inv_dir, t_max);
-            const float t_right = slab_entry({nodes_[right].lo, nodes_[right].hi}, ray.origin, inv_dir, t_max);
+            const float t_left =
+                slab_entry({nodes_[left].lo, nodes_[left].hi}, ray.origin, inv_dir, t_max);
+            const float t_right =
+                slab_entry({nodes_[right].lo, nodes_[right].hi}, ray.origin, inv_dir, t_max);
             const bool go_left = t_left != kInfinity;
             const bool go_right = t_right != kInfinity;
             if (go_left && go_right) {

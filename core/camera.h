@@ -27,7 +27,9 @@ struct Camera {
 
     // The ray through the centre of pixel (x, y); y = 0 is the bottom row.
     // d = -N n + W (2(x + 1/2)/nCols - 1) u + H (2(y + 1/2)/nRows - 1) v
-    Ray ray(int x, int y) const { return ray_at(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f); }
+    Ray ray(int x, int y) const {
+        return ray_at(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+    }
     // The same for a continuous position on the pixel grid.
     Ray ray_at(float px, float py) const;
 

@@ -15,20 +15,29 @@ namespace {
 vec3 encoded(const vec3& c) { return {srgb_encode(c.x), srgb_encode(c.y), srgb_encode(c.z)}; }
 
 // Colours given in sRGB terms are decoded, so that they show as written once encoded.
-vec3 from_srgb(float r, float g, float b) { return {srgb_decode(r), srgb_decode(g), srgb_decode(b)}; }
+vec3 from_srgb(float r, float g, float b) {
+    return {srgb_decode(r), srgb_decode(g), srgb_decode(b)};
+}
 
 // A 3x5 pixel font for the scale's numbers.
 const std::array<std::uint16_t, 13>& glyphs() {
     // Rows top to bottom, 3 bits each, for 0-9, '.', 'e', '-'.
     static const std::array<std::uint16_t, 13> g = {
-        0b111101101101111, 0b010110010010111, 0b111001111100111, 0b111001111001111, 0b101101111001001, 0b111100111001111,
-        0b111100111101111, 0b111001010010010, 0b111101111101111, 0b111101111001111, 0b000000000000010, 0b000111101110011, 0b000000111000000};
+        0b111101101101111, 0b010110010010111, 0b111001111100111, 0b111001111001111,
+        0b101101111001001, 0b111100111001111, 0b111100111101111, 0b111001010010010,
+        0b111101111101111, 0b111101111001111, 0b000000000000010, 0b000111101110011,
+        0b000000111000000};
     return g;
 }
 
-void draw_text(Image& image, int x, int y_top, const std::string& text, int scale, const vec3& colour) {
+void draw_text(Image& image, int x, int y_top, const std::string& text, int scale,
+               const vec3& colour) {
     for (char ch : text) {
-        const int index = ch >= '0' && ch <= '9' ? ch - '0' : ch == '.' ? 10 : ch == 'e' ? 11 : ch == '-' ? 12 : -1;
+        const int index = ch >= '0' && ch <= '9' ? ch - '0'
+                          : ch == '.'            ? 10
+                          : ch == 'e'            ? 11
+                          : ch == '-'            ? 12
+                                                 : -1;
         if (index >= 0) {
             const std::uint16_t bits = glyphs()[static_cast<std::size_t>(index)];
             for (int row = 0; row < 5; ++row)
@@ -37,7 +46,8 @@ void draw_text(Image& image, int x, int y_top, const std::string& text, int scal
                         for (int sy = 0; sy < scale; ++sy)
                             for (int sx = 0; sx < scale; ++sx) {
                                 const int px = x + col * scale + sx, py = y_top - row * scale - sy;
-                                if (px >= 0 && py >= 0 && px < image.width && py < image.height) image.at(px, py) = colour;
+                                if (px >= 0 && py >= 0 && px < image.width && py < image.height)
+                                    image.at(px, py) = colour;
                             }
         }
         x += 4 * scale;
@@ -55,8 +65,9 @@ std::string short_number(float v) {
 }  // namespace
 
 vec3 heat_colour(float t) {
-    static const std::array<vec3, 5> stops = {from_srgb(0, 0, 0), from_srgb(0.1f, 0.2f, 0.85f), from_srgb(0.8f, 0.15f, 0.75f),
-                                              from_srgb(1.0f, 0.55f, 0.1f), from_srgb(1.0f, 1.0f, 0.4f)};
+    static const std::array<vec3, 5> stops = {
+        from_srgb(0, 0, 0), from_srgb(0.1f, 0.2f, 0.85f), from_srgb(0.8f, 0.15f, 0.75f),
+        from_srgb(1.0f, 0.55f, 0.1f), from_srgb(1.0f, 1.0f, 0.4f)};
     const float x = std::clamp(t, 0.0f, 1.0f) * static_cast<float>(stops.size() - 1);
     const auto i = std::min(static_cast<std::size_t>(x), stops.size() - 2);
     const float f = x - static_cast<float>(i);
@@ -64,7 +75,8 @@ vec3 heat_colour(float t) {
 }
 
 ImageDiff compare_images(const Image& a, const Image& b, double threshold) {
-    if (a.width != b.width || a.height != b.height) throw std::invalid_argument("compare_images: the sizes differ");
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("compare_images: the sizes differ");
     ImageDiff d;
     d.threshold = threshold;
     double sum = 0.0, sum_sq = 0.0;
@@ -83,12 +95,14 @@ ImageDiff compare_images(const Image& a, const Image& b, double threshold) {
     d.mean_abs_error = sum / n;
     d.rms = std::sqrt(sum_sq / n);
     d.psnr_db = d.rms > 0.0 ? 20.0 * std::log10(1.0 / d.rms) : INFINITY;
-    d.share_over = static_cast<double>(d.pixels_over) / std::max<double>(1.0, static_cast<double>(a.pixels.size()));
+    d.share_over = static_cast<double>(d.pixels_over) /
+                   std::max<double>(1.0, static_cast<double>(a.pixels.size()));
     return d;
 }
 
 Image difference_image(const Image& a, const Image& b, float scale) {
-    if (a.width != b.width || a.height != b.height) throw std::invalid_argument("difference_image: the sizes differ");
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("difference_image: the sizes differ");
     // The scale down the right-hand side: a colour strip, and its end values beside it.
     const int text_scale = a.height >= 200 ? 2 : 1;
     const int strip = 4 + 4 * text_scale;
@@ -100,7 +114,8 @@ Image difference_image(const Image& a, const Image& b, float scale) {
             const vec3 d = glm::abs(encoded(a.at(x, y)) - encoded(b.at(x, y)));
             out.at(x, y) = heat_colour(std::max({d.x, d.y, d.z}) / s);
         }
-        const vec3 c = heat_colour(static_cast<float>(y) / static_cast<float>(std::max(1, a.height - 1)));
+        const vec3 c =
+            heat_colour(static_cast<float>(y) / static_cast<float>(std::max(1, a.height - 1)));
         for (int x = a.width + 2; x < a.width + strip; ++x) out.at(x, y) = c;
     }
     const vec3 white(1.0f);
@@ -110,18 +125,18 @@ Image difference_image(const Image& a, const Image& b, float scale) {
     return out;
 }
 
+vec3 item_colour(std::uint32_t id) {
+    if (id == ItemBuffer::kEmpty) return vec3(0.0f);
+    // A golden-ratio walk around the hue circle keeps neighbouring ids apart.
+    const float hue = std::fmod(static_cast<float>(id) * 0.61803398875f, 1.0f);
+    const vec3 rgb =
+        glm::clamp(glm::abs(glm::mod(hue * 6.0f + vec3(0, 4, 2), 6.0f) - 3.0f) - 1.0f, 0.0f, 1.0f);
+    return from_srgb(0.25f + 0.75f * rgb.x, 0.25f + 0.75f * rgb.y, 0.25f + 0.75f * rgb.z);
+}
+
 Image item_buffer_image(const ItemBuffer& ib) {
     Image out(ib.width, ib.height);
-    for (int y = 0; y < ib.height; ++y) {
-        for (int x = 0; x < ib.width; ++x) {
-            const std::uint32_t id = ib.object[ib.index(x, y)];
-            if (id == ItemBuffer::kEmpty) continue;
-            // A golden-ratio walk around the hue circle keeps neighbouring ids apart.
-            const float hue = std::fmod(static_cast<float>(id) * 0.61803398875f, 1.0f);
-            const vec3 rgb = glm::clamp(glm::abs(glm::mod(hue * 6.0f + vec3(0, 4, 2), 6.0f) - 3.0f) - 1.0f, 0.0f, 1.0f);
-            out.at(x, y) = from_srgb(0.25f + 0.75f * rgb.x, 0.25f + 0.75f * rgb.y, 0.25f + 0.75f * rgb.z);
-        }
-    }
+    for (std::size_t i = 0; i < ib.object.size(); ++i) out.pixels[i] = item_colour(ib.object[i]);
     return out;
 }
 

@@ -13,9 +13,9 @@ namespace rt {
 struct ImageDiff {
     double mean_abs_error = 0.0;  // over all channels of all pixels
     double rms = 0.0;
-    double psnr_db = 0.0;         // infinite when identical
-    double max_error = 0.0;       // the largest channel difference
-    double share_over = 0.0;      // share of pixels with a channel differing by more than `threshold`
+    double psnr_db = 0.0;     // infinite when identical
+    double max_error = 0.0;   // the largest channel difference
+    double share_over = 0.0;  // share of pixels with a channel differing by more than `threshold`
     std::uint64_t pixels_over = 0;
     double threshold = 0.0;
 };
@@ -30,6 +30,8 @@ Image difference_image(const Image& a, const Image& b, float scale);
 
 // Object ids in distinct false colours (black where there is nothing).
 Image item_buffer_image(const ItemBuffer& ib);
+// The colour of one id in that image (linear RGB).
+vec3 item_colour(std::uint32_t id);
 
 // The colour map itself, t in [0, 1].
 vec3 heat_colour(float t);

@@ -8,7 +8,7 @@
 namespace rt {
 
 class Error : public std::runtime_error {
-public:
+  public:
     Error(std::string file, std::string where, std::string what)
         : std::runtime_error(file + ": " + where + ": " + what),
           file_(std::move(file)),
@@ -19,7 +19,7 @@ public:
     const std::string& where() const { return where_; }
     const std::string& detail() const { return what_; }
 
-private:
+  private:
     std::string file_;
     std::string where_;
     std::string what_;

@@ -16,7 +16,8 @@ struct Image {
     std::vector<vec3> pixels;  // row-major, row 0 at the bottom
 
     Image() = default;
-    Image(int w, int h) : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, vec3(0.0f)) {}
+    Image(int w, int h)
+        : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, vec3(0.0f)) {}
 
     vec3& at(int x, int y) { return pixels[static_cast<std::size_t>(y) * width + x]; }
     const vec3& at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }

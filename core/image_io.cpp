@@ -22,7 +22,8 @@ bool is_supported_output(const std::filesystem::path& path) {
 
 void write_image(const Image& image, const std::filesystem::path& path) {
     const std::string file = path.string();
-    if (!is_supported_output(path)) throw Error(file, "output", "unsupported format; use .png or .exr");
+    if (!is_supported_output(path))
+        throw Error(file, "output", "unsupported format; use .png or .exr");
     auto out = OIIO::ImageOutput::create(file);
     if (!out) throw Error(file, "output", OIIO::geterror());
 
@@ -57,7 +58,8 @@ Image read_image(const std::filesystem::path& path) {
     Image image(spec.width, spec.height);
     for (int y = 0; y < spec.height; ++y) {
         for (int x = 0; x < spec.width; ++x) {
-            const float* px = &data[(static_cast<std::size_t>(y) * spec.width + x) * spec.nchannels];
+            const float* px =
+                &data[(static_cast<std::size_t>(y) * spec.width + x) * spec.nchannels];
             vec3 c;
             for (int k = 0; k < 3; ++k) c[k] = px[std::min(k, spec.nchannels - 1)];
             image.at(x, spec.height - 1 - y) =

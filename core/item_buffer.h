@@ -18,7 +18,10 @@ struct ItemBuffer {
 
     ItemBuffer() = default;
     ItemBuffer(int w, int h)
-        : width(w), height(h), object(static_cast<std::size_t>(w) * h, kEmpty), prim(object.size(), 0) {}
+        : width(w),
+          height(h),
+          object(static_cast<std::size_t>(w) * h, kEmpty),
+          prim(object.size(), 0) {}
 
     std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
 

@@ -23,7 +23,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
         row[0] = i;
         for (std::size_t j = 1; j <= b.size(); ++j) {
             const std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1] ? 1u : 0u)});
+            row[j] =
+                std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1] ? 1u : 0u)});
             diagonal = above;
         }
     }
@@ -33,9 +34,12 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 std::string escape_pointer_token(std::string_view key) {
     std::string out;
     for (char c : key) {
-        if (c == '~') out += "~0";
-        else if (c == '/') out += "~1";
-        else out += c;
+        if (c == '~')
+            out += "~0";
+        else if (c == '/')
+            out += "~1";
+        else
+            out += c;
     }
     return out;
 }
@@ -52,7 +56,8 @@ std::string parse_error_detail(std::string message) {
     if (!message.empty() && message[0] == '[') message.erase(0, message.find("] ") + 2);
     const auto at = message.find(" at line ");
     const auto colon = message.find(": ");
-    return at != std::string::npos && colon != std::string::npos ? message.substr(colon + 2) : message;
+    return at != std::string::npos && colon != std::string::npos ? message.substr(colon + 2)
+                                                                 : message;
 }
 
 std::string line_and_column(const std::string& text, std::size_t byte) {
@@ -66,7 +71,8 @@ std::string line_and_column(const std::string& text, std::size_t byte) {
         }
     }
     // nlohmann reports the byte after the offending one
-    return "line " + std::to_string(line) + ", column " + std::to_string(column > 1 ? column - 1 : 1);
+    return "line " + std::to_string(line) + ", column " +
+           std::to_string(column > 1 ? column - 1 : 1);
 }
 
 }  // namespace
@@ -74,20 +80,23 @@ std::string line_and_column(const std::string& text, std::size_t byte) {
 nlohmann::json parse_json_file(const std::filesystem::path& path) {
     const std::string file = path.string();
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw Error(file, "open", "is a directory, not a scene file");
+    if (std::filesystem::is_directory(path, ec))
+        throw Error(file, "open", "is a directory, not a scene file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(file, "open", "cannot open file (does it exist?)");
     std::ostringstream buffer;
     buffer << in.rdbuf();
     const std::string text = buffer.str();
-    if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw Error(file, "line 1", "the file is empty");
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+        throw Error(file, "line 1", "the file is empty");
 
     const auto limit_depth = [](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
         if (depth > kMaxNesting) throw TooDeep{};
         return true;
     };
     try {
-        return nlohmann::json::parse(text, limit_depth, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+        return nlohmann::json::parse(text, limit_depth, /*allow_exceptions=*/true,
+                                     /*ignore_comments=*/true);
     } catch (const nlohmann::json::parse_error& e) {
         throw Error(file, line_and_column(text, e.byte), parse_error_detail(e.what()));
     } catch (const nlohmann::json::out_of_range& e) {
@@ -96,9 +105,11 @@ nlohmann::json parse_json_file(const std::filesystem::path& path) {
         const auto open = message.find('\''), close = message.rfind('\'');
         const std::string literal = open < close ? message.substr(open + 1, close - open - 1) : "";
         const std::size_t at = literal.empty() ? std::string::npos : text.find(literal);
-        throw Error(file, at == std::string::npos ? "(document)" : line_and_column(text, at + 1), message);
+        throw Error(file, at == std::string::npos ? "(document)" : line_and_column(text, at + 1),
+                    message);
     } catch (const TooDeep&) {
-        throw Error(file, "(document)", "nested more than " + std::to_string(kMaxNesting) + " levels deep");
+        throw Error(file, "(document)",
+                    "nested more than " + std::to_string(kMaxNesting) + " levels deep");
     }
 }
 
@@ -109,7 +120,8 @@ void JsonValue::fail(const std::string& what) const {
 std::string JsonValue::describe_type() const {
     if (json_->is_number()) return "the number " + json_->dump();
     if (json_->is_string()) return "the string " + json_->dump();
-    return json_->type_name() + std::string(json_->is_array() || json_->is_object() ? "" : " value");
+    return json_->type_name() +
+           std::string(json_->is_array() || json_->is_object() ? "" : " value");
 }
 
 void JsonValue::keys(std::initializer_list<std::string_view> allowed) const {
@@ -123,7 +135,8 @@ void JsonValue::keys(std::initializer_list<std::string_view> allowed) const {
             const std::size_t d = edit_distance(key, candidate);
             if (d < best_distance) best_distance = d, best = candidate;
         }
-        if (!best.empty()) message += " (did you mean \"" + std::string(best) + "\"?)";
+        if (!best.empty())
+            message += " (did you mean \"" + std::string(best) + "\"?)";
         else {
             message += "; allowed here:";
             for (std::string_view candidate : allowed) message += " " + std::string(candidate);
@@ -132,7 +145,9 @@ void JsonValue::keys(std::initializer_list<std::string_view> allowed) const {
     }
 }
 
-bool JsonValue::has(std::string_view key) const { return json_->is_object() && json_->contains(key); }
+bool JsonValue::has(std::string_view key) const {
+    return json_->is_object() && json_->contains(key);
+}
 
 JsonValue JsonValue::operator[](std::string_view key) const {
     if (!json_->is_object()) fail("expected an object {...}, got " + describe_type());
@@ -158,14 +173,16 @@ std::vector<JsonValue> JsonValue::elements(std::size_t min_size, std::size_t max
     if (!json_->is_array()) fail("expected an array [...], got " + describe_type());
     const std::size_t n = json_->size();
     if (n < min_size || n > max_size) {
-        const std::string expected = min_size == max_size ? std::to_string(min_size)
-                                     : max_size == SIZE_MAX ? "at least " + std::to_string(min_size)
-                                     : std::to_string(min_size) + " to " + std::to_string(max_size);
+        const std::string expected =
+            min_size == max_size   ? std::to_string(min_size)
+            : max_size == SIZE_MAX ? "at least " + std::to_string(min_size)
+                                   : std::to_string(min_size) + " to " + std::to_string(max_size);
         fail("expected " + expected + " elements, got " + std::to_string(n));
     }
     std::vector<JsonValue> out;
     out.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) out.emplace_back((*json_)[i], pointer_ + "/" + std::to_string(i), *file_);
+    for (std::size_t i = 0; i < n; ++i)
+        out.emplace_back((*json_)[i], pointer_ + "/" + std::to_string(i), *file_);
     return out;
 }
 
@@ -173,7 +190,8 @@ float JsonValue::number() const {
     if (!json_->is_number()) fail("expected a number, got " + describe_type());
     const double x = json_->get<double>();
     if (!std::isfinite(x)) fail("is not a finite number");
-    if (std::fabs(x) > std::numeric_limits<float>::max()) fail("is too large (" + json_->dump() + ")");
+    if (std::fabs(x) > std::numeric_limits<float>::max())
+        fail("is too large (" + json_->dump() + ")");
     return static_cast<float>(x);
 }
 
@@ -192,7 +210,8 @@ float JsonValue::number_above(float lo) const {
 float JsonValue::number_between(float lo, float hi) const {
     const float x = number();
     if (x < lo || x > hi)
-        fail("must be between " + format_number(lo) + " and " + format_number(hi) + ", got " + format_number(x));
+        fail("must be between " + format_number(lo) + " and " + format_number(hi) + ", got " +
+             format_number(x));
     return x;
 }
 
@@ -200,7 +219,8 @@ int JsonValue::integer_between(int lo, int hi) const {
     if (!json_->is_number_integer()) fail("expected a whole number, got " + describe_type());
     const auto x = json_->get<long long>();
     if (x < lo || x > hi)
-        fail("must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " + std::to_string(x));
+        fail("must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
+             std::to_string(x));
     return static_cast<int>(x);
 }
 

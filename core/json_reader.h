@@ -21,7 +21,7 @@ namespace rt {
 nlohmann::json parse_json_file(const std::filesystem::path& path);
 
 class JsonValue {
-public:
+  public:
     JsonValue(const nlohmann::json& json, std::string pointer, const std::string& file)
         : json_(&json), pointer_(std::move(pointer)), file_(&file) {}
 
@@ -38,7 +38,8 @@ public:
     std::vector<std::pair<std::string, JsonValue>> members() const;
 
     // Arrays, with their allowed length.
-    std::vector<JsonValue> elements(std::size_t min_size = 0, std::size_t max_size = SIZE_MAX) const;
+    std::vector<JsonValue> elements(std::size_t min_size = 0,
+                                    std::size_t max_size = SIZE_MAX) const;
 
     // Scalars; every number must be finite and fit a float.
     float number() const;
@@ -56,7 +57,7 @@ public:
     bool is_number() const { return json_->is_number(); }
     bool is_string() const { return json_->is_string(); }
 
-private:
+  private:
     std::string describe_type() const;
 
     const nlohmann::json* json_;

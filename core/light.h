@@ -9,9 +9,9 @@ namespace rt {
 struct Light {
     enum class Type { kPoint, kDirectional };
     Type type = Type::kPoint;
-    vec3 position{0.0f};                 // point lights
+    vec3 position{0.0f};                // point lights
     vec3 direction{0.0f, -1.0f, 0.0f};  // directional lights: the way the light travels (unit)
-    vec3 colour{1.0f};                   // the tutorial's I_l
+    vec3 colour{1.0f};                  // the tutorial's I_l
 
     // The shadow feeler from p: sf(t) = p + (l - p) t with t in (0, 1) for a point light;
     // towards the light, unbounded, for a directional one. Returns the t limit.

@@ -35,7 +35,8 @@ std::size_t TriangleMesh::memory_bytes() const {
 bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
     return bvh_.traverse<false>(r, hit.t, [&](std::uint32_t tri, float& t_max) {
         const glm::uvec3 idx = triangles[tri];
-        const auto h = intersect_triangle(positions[idx[0]], positions[idx[1]], positions[idx[2]], r, t_max);
+        const auto h =
+            intersect_triangle(positions[idx[0]], positions[idx[1]], positions[idx[2]], r, t_max);
         if (!h) return false;
         t_max = h->t;
         hit.prim = tri;
@@ -48,7 +49,8 @@ bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
 bool TriangleMesh::occluded(const Ray& r, float t_max) const {
     return bvh_.traverse<true>(r, t_max, [&](std::uint32_t tri, float& t_limit) {
         const glm::uvec3 idx = triangles[tri];
-        return intersect_triangle(positions[idx[0]], positions[idx[1]], positions[idx[2]], r, t_limit)
+        return intersect_triangle(positions[idx[0]], positions[idx[1]], positions[idx[2]], r,
+                                  t_limit)
             .has_value();
     });
 }
@@ -83,7 +85,8 @@ std::vector<std::uint32_t> weld_positions(const std::vector<vec3>& positions) {
     };
     std::unordered_map<vec3, std::uint32_t, Hash> first;
     std::vector<std::uint32_t> weld(positions.size());
-    for (std::uint32_t i = 0; i < positions.size(); ++i) weld[i] = first.try_emplace(positions[i], i).first->second;
+    for (std::uint32_t i = 0; i < positions.size(); ++i)
+        weld[i] = first.try_emplace(positions[i], i).first->second;
     return weld;
 }
 
@@ -92,7 +95,8 @@ std::vector<std::uint32_t> weld_positions(const std::vector<vec3>& positions) {
 void compute_corner_normals(TriangleMesh& mesh, float crease_degrees) {
     const std::size_t tri_count = mesh.triangles.size();
     std::vector<vec3> face(tri_count);
-    for (std::size_t t = 0; t < tri_count; ++t) face[t] = mesh.face_normal(static_cast<std::uint32_t>(t));
+    for (std::size_t t = 0; t < tri_count; ++t)
+        face[t] = mesh.face_normal(static_cast<std::uint32_t>(t));
 
     // Vertices at the same position count as one (patch seams repeat them), so
     // normals are smooth across seams; then the faces around each such vertex, as a
@@ -118,7 +122,8 @@ void compute_corner_normals(TriangleMesh& mesh, float crease_degrees) {
             for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
                 const vec3& other = face[faces_at[i]];  // length = 2 x area: area weighting
                 const float other_len = glm::length(other);
-                if (other_len > 0.0f && glm::dot(own, other) >= cos_crease * other_len) sum += other;
+                if (other_len > 0.0f && glm::dot(own, other) >= cos_crease * other_len)
+                    sum += other;
             }
             const float sum_len = glm::length(sum);
             mesh.corner_normals[3 * t + k] = sum_len > 0.0f ? sum / sum_len : own;

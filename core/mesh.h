@@ -34,7 +34,7 @@ struct TriangleMesh {
     vec3 shading_normal(const Hit& hit) const;
     vec3 point(const Hit& hit) const;  // rebuilt from barycentrics: more exact than o + d t
 
-private:
+  private:
     Aabb bounds_;
     Bvh bvh_;
 };

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>
+#include <glm/geometric.hpp>
 
 #include "core/error.h"
 
@@ -15,7 +15,9 @@ namespace {
 
 vec3 to_vec3(const tinyobj::real_t* v) { return {v[0], v[1], v[2]}; }
 
-bool finite(const vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 Material from_mtl(const tinyobj::material_t& m) {
     Material out;
@@ -40,7 +42,8 @@ void copy_positions(const std::string& file, const tinyobj::attrib_t& attrib, Tr
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         mesh.positions[i] = to_vec3(&attrib.vertices[3 * i]);
         if (!finite(mesh.positions[i]))
-            throw Error(file, "vertex " + std::to_string(i + 1), "coordinate is not a finite number");
+            throw Error(file, "vertex " + std::to_string(i + 1),
+                        "coordinate is not a finite number");
     }
 }
 
@@ -54,24 +57,30 @@ bool copy_triangles(const std::string& file, const tinyobj::ObjReader& reader, T
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         const auto& idx = shape.mesh.indices;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-            const std::string where = (shape.name.empty() ? "" : "object \"" + shape.name + "\", ") + "face " +
-                                      std::to_string(f + 1);
-            if (shape.mesh.num_face_vertices[f] != 3) throw Error(file, where, "face was not triangulated");
+            const std::string where =
+                (shape.name.empty() ? "" : "object \"" + shape.name + "\", ") + "face " +
+                std::to_string(f + 1);
+            if (shape.mesh.num_face_vertices[f] != 3)
+                throw Error(file, where, "face was not triangulated");
             glm::uvec3 tri;
             for (int k = 0; k < 3; ++k) {
                 const tinyobj::index_t& corner = idx[3 * f + k];
                 if (corner.vertex_index < 0 || corner.vertex_index >= vertex_count)
-                    throw Error(file, where, "vertex index out of range (the file has " +
-                                                 std::to_string(vertex_count) + " vertices)");
+                    throw Error(file, where,
+                                "vertex index out of range (the file has " +
+                                    std::to_string(vertex_count) + " vertices)");
                 tri[k] = static_cast<std::uint32_t>(corner.vertex_index);
-                const bool has_normal = corner.normal_index >= 0 && corner.normal_index < normal_count;
-                const vec3 n = has_normal ? to_vec3(&attrib.normals[3 * corner.normal_index]) : vec3(0.0f);
+                const bool has_normal =
+                    corner.normal_index >= 0 && corner.normal_index < normal_count;
+                const vec3 n =
+                    has_normal ? to_vec3(&attrib.normals[3 * corner.normal_index]) : vec3(0.0f);
                 all_normals = all_normals && finite(n) && glm::dot(n, n) > 0.0f;
                 normals.push_back(n);
             }
             mesh.triangles.push_back(tri);
             const int material = shape.mesh.material_ids.empty() ? -1 : shape.mesh.material_ids[f];
-            mesh.materials.push_back(material >= 0 ? static_cast<std::uint32_t>(material) : kNoObjMaterial);
+            mesh.materials.push_back(material >= 0 ? static_cast<std::uint32_t>(material)
+                                                   : kNoObjMaterial);
         }
     }
     if (all_normals) {
@@ -92,7 +101,8 @@ void check_vertex_lines(const std::filesystem::path& path) {
         std::string token;
         for (int k = 0; k < 3 && tokens >> token; ++k) {
             float value = 0.0f;
-            const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+            const auto [end, ec] =
+                std::from_chars(token.data(), token.data() + token.size(), value);
             if (ec != std::errc{} || end != token.data() + token.size() || !std::isfinite(value))
                 throw Error(path.string(), "line " + std::to_string(number),
                             "vertex coordinate \"" + token + "\" is not a finite number");
@@ -105,7 +115,8 @@ void check_vertex_lines(const std::filesystem::path& path) {
 ObjData load_obj(const std::filesystem::path& path, float crease_degrees) {
     const std::string file = path.string();
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw Error(file, "open", "cannot open file (does it exist?)");
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error(file, "open", "cannot open file (does it exist?)");
 
     check_vertex_lines(path);
     tinyobj::ObjReaderConfig config;
@@ -115,7 +126,8 @@ ObjData load_obj(const std::filesystem::path& path, float crease_degrees) {
     tinyobj::ObjReader reader;
     if (!reader.ParseFromFile(file, config)) {
         std::string message = reader.Error();
-        while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
+        while (!message.empty() && (message.back() == '\n' || message.back() == '\r'))
+            message.pop_back();
         throw Error(file, "parse", message.empty() ? "not a readable OBJ file" : message);
     }
 
@@ -125,7 +137,8 @@ ObjData load_obj(const std::filesystem::path& path, float crease_degrees) {
     for (const auto& m : reader.GetMaterials()) data.materials.push_back(from_mtl(m));
     copy_positions(file, reader.GetAttrib(), data.mesh);
     if (!copy_triangles(file, reader, data.mesh)) compute_corner_normals(data.mesh, crease_degrees);
-    if (data.mesh.triangles.empty()) throw Error(file, "faces", "no triangles to render (only points or lines?)");
+    if (data.mesh.triangles.empty())
+        throw Error(file, "faces", "no triangles to render (only points or lines?)");
     return data;
 }
 

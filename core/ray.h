@@ -28,7 +28,7 @@ struct Ray {
 // (Waechter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection",
 // Ray Tracing Gems, ch. 6). This replaces the magic epsilon of t > 0.001.
 inline vec3 offset_ray_origin(const vec3& p, const vec3& normal) {
-    constexpr float kOriginBand = 1.0f / 32.0f;    // below this |x|, step absolutely
+    constexpr float kOriginBand = 1.0f / 32.0f;     // below this |x|, step absolutely
     constexpr float kFloatScale = 1.0f / 65536.0f;  // absolute step near the origin
     constexpr float kIntScale = 256.0f;             // ULPs to step elsewhere
     vec3 out;

@@ -21,15 +21,22 @@ struct Tile {
     int x0, y0, x1, y1;
 };
 
-int tile_count(int width, int height, int size) { return ((width + size - 1) / size) * ((height + size - 1) / size); }
+int tile_count(int width, int height, int size) {
+    return ((width + size - 1) / size) * ((height + size - 1) / size);
+}
 
 // Runs `work(tile, counts)` over every tile on `threads` threads; returns false if
 // stopped before the end.
 class TileRunner {
-public:
+  public:
     // Progress is reported as part of `progress_total` tiles over all runs.
-    TileRunner(int width, int height, int tile_size, int threads, const ProgressFn& progress, int progress_total)
-        : width_(width), height_(height), size_(tile_size), threads_(threads), progress_(progress),
+    TileRunner(int width, int height, int tile_size, int threads, const ProgressFn& progress,
+               int progress_total)
+        : width_(width),
+          height_(height),
+          size_(tile_size),
+          threads_(threads),
+          progress_(progress),
           progress_total_(progress_total) {
         tiles_x_ = (width + size_ - 1) / size_;
         tiles_ = tile_count(width, height, size_);
@@ -59,7 +66,7 @@ public:
         return done == tiles_;
     }
 
-private:
+  private:
     Tile tile(int t) const {
         const int x0 = (t % tiles_x_) * size_, y0 = (t / tiles_x_) * size_;
         return {x0, y0, std::min(x0 + size_, width_), std::min(y0 + size_, height_)};
@@ -74,7 +81,8 @@ private:
 };
 
 // The first hit along a camera ray, from the item buffer where it can be trusted.
-Hit primary_hit(const Scene& scene, const Ray& ray, const ItemBuffer* ib, int x, int y, bool& fell_back) {
+Hit primary_hit(const Scene& scene, const Ray& ray, const ItemBuffer* ib, int x, int y,
+                bool& fell_back) {
     Hit hit;
     if (ib) {
         const std::size_t i = ib->index(x, y);
@@ -96,9 +104,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats, const ProgressFn& progress,
-             std::stop_token stop, const ItemBuffer* item_buffer) {
-    const int width = scene.camera.cols, height = scene.camera.rows;
+Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats,
+             const ProgressFn& progress, std::stop_token stop, const ItemBuffer* item_buffer) {
+    return render(scene, scene.camera, options, stats, progress, stop, item_buffer);
+}
+
+Image render(const Scene& scene, const Camera& camera, const RenderOptions& options,
+             RenderStats* stats, const ProgressFn& progress, std::stop_token stop,
+             const ItemBuffer* item_buffer) {
+    const int width = camera.cols, height = camera.rows;
     if (item_buffer && (item_buffer->width != width || item_buffer->height != height))
         throw std::invalid_argument("render: the item buffer's size differs from the camera's");
     const int threads = resolve_thread_count(options.threads);
@@ -116,7 +130,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
         for (int y = t.y0; y < t.y1; ++y) {
             for (int x = t.x0; x < t.x1; ++x) {
                 bool fell_back = false;
-                hits[static_cast<std::size_t>(y) * width + x] = primary_hit(scene, scene.camera.ray(x, y), item_buffer, x, y, fell_back);
+                hits[static_cast<std::size_t>(y) * width + x] =
+                    primary_hit(scene, camera.ray(x, y), item_buffer, x, y, fell_back);
                 fell += fell_back;
                 ++local.primary;
             }
@@ -130,7 +145,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     complete = complete && runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
         for (int y = t.y0; y < t.y1; ++y) {
             for (int x = t.x0; x < t.x1; ++x) {
-                vec3 c = tracer.shade_hit(scene.camera.ray(x, y), hits[static_cast<std::size_t>(y) * width + x], local);
+                vec3 c = tracer.shade_hit(camera.ray(x, y),
+                                          hits[static_cast<std::size_t>(y) * width + x], local);
                 if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
                     nonfinite.fetch_add(1, std::memory_order_relaxed);
                     c = vec3(0.0f);

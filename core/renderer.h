@@ -22,27 +22,34 @@ struct RenderOptions {
 struct RenderStats {
     RayCounts rays;
     int threads = 0;
-    double seconds = 0.0;            // both passes
-    double primary_seconds = 0.0;    // finding the first hits
-    double secondary_seconds = 0.0;  // shading: shadow feelers, reflection, refraction
+    double seconds = 0.0;                     // both passes
+    double primary_seconds = 0.0;             // finding the first hits
+    double secondary_seconds = 0.0;           // shading: shadow feelers, reflection, refraction
     std::uint64_t nonfinite_pixels = 0;       // replaced by black; should stay 0
     std::uint64_t item_buffer_fallbacks = 0;  // pixels the item buffer could not settle
     bool cancelled = false;
 
-    double mrays_per_s() const { return seconds > 0.0 ? static_cast<double>(rays.total()) / seconds * 1e-6 : 0.0; }
+    double mrays_per_s() const {
+        return seconds > 0.0 ? static_cast<double>(rays.total()) / seconds * 1e-6 : 0.0;
+    }
 };
 
 // Called after each finished tile of either pass with (tiles done, tiles in all), from
 // a worker thread but never from two at once.
 using ProgressFn = std::function<void(int done, int total)>;
 
-// Renders scene.camera's view. With an item buffer (of the camera's size) the primary
-// hits come from it: only the named object or triangle is tested, and pixels on an
-// object's border, or where that test misses, fall back to a full traversal.
-// When `stop` is requested the workers finish their current tile and return; the image
-// is then partly black and stats.cancelled is set.
+// Renders scene.camera's view (or `camera`'s). With an item buffer (of the camera's size) the
+// primary hits come from it: only the named object or triangle is tested, and pixels on an object's
+// border, or where that test misses, fall back to a full traversal. When `stop` is requested the
+// workers finish their current tile and return; the image is then partly black and stats.cancelled
+// is set.
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr,
-             const ProgressFn& progress = {}, std::stop_token stop = {}, const ItemBuffer* item_buffer = nullptr);
+             const ProgressFn& progress = {}, std::stop_token stop = {},
+             const ItemBuffer* item_buffer = nullptr);
+// The same from another camera (the scene is shared read-only, e.g. with a viewer).
+Image render(const Scene& scene, const Camera& camera, const RenderOptions& options,
+             RenderStats* stats = nullptr, const ProgressFn& progress = {},
+             std::stop_token stop = {}, const ItemBuffer* item_buffer = nullptr);
 
 int resolve_thread_count(int requested);
 

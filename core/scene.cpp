@@ -28,29 +28,34 @@ bool intersect_shape(const Scene& scene, const Shape& shape, const Ray& r, Hit& 
 }
 
 bool occluded_shape(const Scene& scene, const Shape& shape, const Ray& r, float t_max) {
-    if (const auto* m = std::get_if<MeshRef>(&shape)) return scene.meshes[m->mesh].occluded(r, t_max);
+    if (const auto* m = std::get_if<MeshRef>(&shape))
+        return scene.meshes[m->mesh].occluded(r, t_max);
     Hit probe;
     probe.t = t_max;
     return intersect_shape(scene, shape, r, probe);
 }
 
-Ray object_ray(const Object& o, const Ray& r) { return o.transform ? o.transform->to_object(r) : r; }
+Ray object_ray(const Object& o, const Ray& r) {
+    return o.transform ? o.transform->to_object(r) : r;
+}
 
 }  // namespace
 
 Aabb Scene::object_bounds(const Object& o) const {
-    Aabb box = std::visit(
-        Overloaded{[&](const Sphere& s) { return Aabb{s.centre - vec3(s.radius), s.centre + vec3(s.radius)}; },
-                   [&](const Triangle& t) {
-                       Aabb b;
-                       b.grow(t.a);
-                       b.grow(t.b);
-                       b.grow(t.c);
-                       return b;
-                   },
-                   [&](const MeshRef& m) { return meshes[m.mesh].bounds(); },
-                   [&](const Plane&) { return Aabb{}; }},
-        o.shape);
+    Aabb box =
+        std::visit(Overloaded{[&](const Sphere& s) {
+                                  return Aabb{s.centre - vec3(s.radius), s.centre + vec3(s.radius)};
+                              },
+                              [&](const Triangle& t) {
+                                  Aabb b;
+                                  b.grow(t.a);
+                                  b.grow(t.b);
+                                  b.grow(t.c);
+                                  return b;
+                              },
+                              [&](const MeshRef& m) { return meshes[m.mesh].bounds(); },
+                              [&](const Plane&) { return Aabb{}; }},
+                   o.shape);
     return o.transform ? box.transformed(o.transform->m) : box;
 }
 
@@ -79,7 +84,8 @@ bool Scene::intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const
     return true;
 }
 
-bool Scene::intersect_primitive(std::uint32_t object, std::uint32_t prim, const Ray& r, Hit& hit) const {
+bool Scene::intersect_primitive(std::uint32_t object, std::uint32_t prim, const Ray& r,
+                                Hit& hit) const {
     if (object >= objects.size()) return false;
     const Object& o = objects[object];
     const auto* m = std::get_if<MeshRef>(&o.shape);
@@ -87,8 +93,8 @@ bool Scene::intersect_primitive(std::uint32_t object, std::uint32_t prim, const 
     const TriangleMesh& mesh = meshes[m->mesh];
     if (prim >= mesh.triangles.size()) return false;
     const glm::uvec3 idx = mesh.triangles[prim];
-    const auto h = intersect_triangle(mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]],
-                                      object_ray(o, r), hit.t);
+    const auto h = intersect_triangle(mesh.positions[idx[0]], mesh.positions[idx[1]],
+                                      mesh.positions[idx[2]], object_ray(o, r), hit.t);
     if (!h) return false;
     hit = Hit{h->t, object, prim, h->b1, h->b2};
     return true;
@@ -132,7 +138,8 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
                               ng = ns = pl.normal;
                           },
                           [&](const Triangle& tri) {
-                              p = (1.0f - hit.b1 - hit.b2) * tri.a + hit.b1 * tri.b + hit.b2 * tri.c;
+                              p = (1.0f - hit.b1 - hit.b2) * tri.a + hit.b1 * tri.b +
+                                  hit.b2 * tri.c;
                               ng = ns = glm::cross(tri.b - tri.a, tri.c - tri.a);
                           },
                           [&](const MeshRef& m) {
@@ -140,7 +147,8 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
                               p = mesh.point(hit);
                               ng = mesh.face_normal(hit.prim);
                               ns = mesh.shading_normal(hit);
-                              if (m.own_materials && !mesh.materials.empty()) sp.material = mesh.materials[hit.prim];
+                              if (m.own_materials && !mesh.materials.empty())
+                                  sp.material = mesh.materials[hit.prim];
                           }},
                o.shape);
 

@@ -35,7 +35,7 @@ struct Object {
 };
 
 class Scene {
-public:
+  public:
     Camera camera;
     vec3 background{0.0f};
     vec3 ambient{0.1f};  // the tutorial's I_a
@@ -53,7 +53,8 @@ public:
     // One object alone.
     bool intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const;
     // One object, and of a mesh one triangle alone: what the item buffer names.
-    bool intersect_primitive(std::uint32_t object, std::uint32_t prim, const Ray& r, Hit& hit) const;
+    bool intersect_primitive(std::uint32_t object, std::uint32_t prim, const Ray& r,
+                             Hit& hit) const;
 
     SurfacePoint surface(const Ray& r, const Hit& hit) const;
 
@@ -61,12 +62,12 @@ public:
     std::size_t triangle_count() const;
     std::size_t accel_memory_bytes() const;
 
-private:
+  private:
     Aabb object_bounds(const Object& o) const;
 
-    Bvh top_;                              // over the bounded objects
-    std::vector<std::uint32_t> bounded_;   // BVH prim -> object
-    std::vector<std::uint32_t> unbounded_; // planes: tested for every ray
+    Bvh top_;                               // over the bounded objects
+    std::vector<std::uint32_t> bounded_;    // BVH prim -> object
+    std::vector<std::uint32_t> unbounded_;  // planes: tested for every ray
 };
 
 }  // namespace rt

@@ -21,13 +21,14 @@ std::string lower(std::string s) {
 
 // Walks one JSON scene into a Scene, keeping the names and caches that loading needs.
 class JsonSceneReader {
-public:
+  public:
     JsonSceneReader(std::filesystem::path path, LoadedScene& out)
         : path_(std::move(path)), file_(path_.string()), out_(out), scene_(out.scene) {}
 
     void read(const nlohmann::json& doc) {
         const JsonValue root(doc, "", file_);
-        root.keys({"camera", "resolution", "background", "ambient", "lights", "materials", "objects"});
+        root.keys(
+            {"camera", "resolution", "background", "ambient", "lights", "materials", "objects"});
         read_materials(root.find("materials"));
         if (const auto bg = root.find("background")) scene_.background = bg->colour();
         if (const auto amb = root.find("ambient")) scene_.ambient = amb->colour();
@@ -43,7 +44,7 @@ public:
         for (const JsonValue& o : root["objects"].elements()) read_object(o);
     }
 
-private:
+  private:
     Camera read_camera(const JsonValue& j, int cols, int rows) const;
     Light read_light(const JsonValue& j) const;
     void read_materials(const std::optional<JsonValue>& j);
@@ -73,7 +74,8 @@ Camera JsonSceneReader::read_camera(const JsonValue& j, int cols, int rows) cons
     const vec3 eye = j["eye"].vector3();
     Camera cam;
     if (j.has("look_at")) {
-        if (j.has("u") || j.has("v") || j.has("n")) j.fail("give either look_at and up, or u, v and n");
+        if (j.has("u") || j.has("v") || j.has("n"))
+            j.fail("give either look_at and up, or u, v and n");
         const vec3 target = j["look_at"].vector3();
         if (!(glm::length(target - eye) > 0.0f)) j["look_at"].fail("must differ from eye");
         const vec3 up = j.has("up") ? unit_vector(j["up"]) : vec3(0.0f, 1.0f, 0.0f);
@@ -86,10 +88,11 @@ Camera JsonSceneReader::read_camera(const JsonValue& j, int cols, int rows) cons
         cam.u = unit_vector(j["u"]);
         cam.v = unit_vector(j["v"]);
         cam.n = unit_vector(j["n"]);
-        if (std::fabs(glm::dot(cam.u, cam.v)) > 1e-3f || std::fabs(glm::dot(cam.u, cam.n)) > 1e-3f ||
-            std::fabs(glm::dot(cam.v, cam.n)) > 1e-3f)
+        if (std::fabs(glm::dot(cam.u, cam.v)) > 1e-3f ||
+            std::fabs(glm::dot(cam.u, cam.n)) > 1e-3f || std::fabs(glm::dot(cam.v, cam.n)) > 1e-3f)
             j.fail("u, v and n must be orthogonal");
-        if (glm::dot(glm::cross(cam.u, cam.v), cam.n) < 0.0f) j.fail("u, v and n must be right-handed (u x v = n)");
+        if (glm::dot(glm::cross(cam.u, cam.v), cam.n) < 0.0f)
+            j.fail("u, v and n must be right-handed (u x v = n)");
         cam.cols = cols;
         cam.rows = rows;
     }
@@ -97,7 +100,8 @@ Camera JsonSceneReader::read_camera(const JsonValue& j, int cols, int rows) cons
         if (j.has("fov")) j.fail("give either fov, or the view plane W, H and N");
         cam.N = j.has("N") ? j["N"].number_above(0.0f) : 1.0f;
         cam.H = j["H"].number_above(0.0f);
-        cam.W = j.has("W") ? j["W"].number_above(0.0f) : cam.H * static_cast<float>(cols) / static_cast<float>(rows);
+        cam.W = j.has("W") ? j["W"].number_above(0.0f)
+                           : cam.H * static_cast<float>(cols) / static_cast<float>(rows);
     } else if (!j.has("look_at")) {
         j.fail("a camera given by u, v and n needs the view plane H (and optionally W and N)");
     }
@@ -189,7 +193,8 @@ glm::mat4 read_transform(const JsonValue& j) {
         return m;
     }
     glm::mat4 m(1.0f);
-    if (const auto s = j.find("scale")) m = glm::scale(glm::mat4(1.0f), s->is_number() ? vec3(s->number()) : s->vector3());
+    if (const auto s = j.find("scale"))
+        m = glm::scale(glm::mat4(1.0f), s->is_number() ? vec3(s->number()) : s->vector3());
     if (const auto r = j.find("rotate")) {
         const vec3 deg = r->vector3();
         for (int axis = 0; axis < 3; ++axis) {
@@ -227,14 +232,19 @@ void JsonSceneReader::read_object(const JsonValue& j) {
         j.keys({"type", "name", "material", "transform", "file", "normalize"});
         o.shape = read_mesh(j, pre);
     } else {
-        j["type"].fail("unknown object type \"" + type + "\" (expected sphere, plane, triangle or mesh)");
+        j["type"].fail("unknown object type \"" + type +
+                       "\" (expected sphere, plane, triangle or mesh)");
     }
-    o.name = j.has("name") ? j["name"].string() : type + " " + j.pointer().substr(j.pointer().rfind('/') + 1);
+    o.name = j.has("name") ? j["name"].string()
+                           : type + " " + j.pointer().substr(j.pointer().rfind('/') + 1);
     o.material = j.has("material") ? material_index(j["material"]) : material_names_.at("default");
-    const glm::mat4 m = (j.has("transform") ? read_transform(j["transform"]) : glm::mat4(1.0f)) * pre;
+    const glm::mat4 m =
+        (j.has("transform") ? read_transform(j["transform"]) : glm::mat4(1.0f)) * pre;
     if (m != glm::mat4(1.0f)) {
         o.transform = Transform::from_matrix(m);
-        if (!o.transform) (j.has("transform") ? j["transform"] : j).fail("the transform is singular (or not affine)");
+        if (!o.transform)
+            (j.has("transform") ? j["transform"] : j)
+                .fail("the transform is singular (or not affine)");
     }
     scene_.objects.push_back(std::move(o));
 }
@@ -248,7 +258,8 @@ Shape JsonSceneReader::read_mesh(const JsonValue& j, glm::mat4& normalize) {
         const float largest = std::max({e.x, e.y, e.z});
         if (!(largest > 0.0f)) j["normalize"].fail("the mesh has no extent to normalise");
         const vec3 anchor{b.centre().x, b.lo.y, b.centre().z};
-        normalize = glm::scale(glm::mat4(1.0f), vec3(1.0f / largest)) * glm::translate(glm::mat4(1.0f), -anchor);
+        normalize = glm::scale(glm::mat4(1.0f), vec3(1.0f / largest)) *
+                    glm::translate(glm::mat4(1.0f), -anchor);
     }
     return MeshRef{index, !j.has("material")};
 }
@@ -314,7 +325,8 @@ void frame_bounds(Scene& scene, const Aabb& bounds, int cols, int rows) {
     const float fov = 40.0f;
     const float distance = radius / std::sin(glm::radians(fov) * 0.5f) * 1.05f;
     const vec3 view_dir = glm::normalize(vec3(0.35f, 0.3f, 1.0f));
-    scene.camera = Camera::look_at(centre + distance * view_dir, centre, vec3(0, 1, 0), fov, cols, rows);
+    scene.camera =
+        Camera::look_at(centre + distance * view_dir, centre, vec3(0, 1, 0), fov, cols, rows);
     Light key{Light::Type::kPoint, centre + radius * vec3(2.0f, 4.0f, 3.0f), {}, vec3(0.8f)};
     Light fill{Light::Type::kPoint, centre + radius * vec3(-3.0f, 1.5f, 2.0f), {}, vec3(0.35f)};
     scene.lights = {key, fill};
@@ -342,7 +354,8 @@ LoadedScene load_scene(const std::filesystem::path& path) {
     const std::string ext = lower(path.extension().string());
     if (ext == ".obj") return load_obj_scene(path);
     if (ext == ".json") return load_json_scene(path);
-    throw Error(path.string(), "open", "unknown scene format \"" + ext + "\" (expected .json or .obj)");
+    throw Error(path.string(), "open",
+                "unknown scene format \"" + ext + "\" (expected .json or .obj)");
 }
 
 }  // namespace rt

@@ -18,14 +18,16 @@ TriangleMesh tessellate_unit_sphere(int segments) {
         const float theta = pi * static_cast<float>(i) / static_cast<float>(stacks);
         for (int j = 0; j <= slices; ++j) {
             const float phi = 2.0f * pi * static_cast<float>(j) / static_cast<float>(slices);
-            mesh.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)});
+            mesh.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta),
+                                      -std::sin(theta) * std::sin(phi)});
         }
     }
     const auto at = [&](int i, int j) { return static_cast<std::uint32_t>(i * (slices + 1) + j); };
     for (int i = 0; i < stacks; ++i) {
         for (int j = 0; j < slices; ++j) {
             if (i > 0) mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
-            if (i < stacks - 1) mesh.triangles.push_back({at(i, j + 1), at(i + 1, j), at(i + 1, j + 1)});
+            if (i < stacks - 1)
+                mesh.triangles.push_back({at(i, j + 1), at(i + 1, j), at(i + 1, j + 1)});
         }
     }
     for (const auto& tri : mesh.triangles)
@@ -43,7 +45,8 @@ float projected_radius_pixels(const Camera& camera, const vec3& centre, float ra
     const float depth = glm::dot(camera.eye - centre, camera.n);  // along the view axis
     const float distance = glm::length(camera.eye - centre);
     if (distance <= radius * 1.01f || depth <= radius) return 1e6f;  // around or behind the eye
-    const float pixels_per_unit = camera.N / (depth - radius) * static_cast<float>(camera.rows) / (2.0f * camera.H);
+    const float pixels_per_unit =
+        camera.N / (depth - radius) * static_cast<float>(camera.rows) / (2.0f * camera.H);
     return radius * pixels_per_unit;
 }
 

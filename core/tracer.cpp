@@ -68,7 +68,8 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) cons
     return colour;
 }
 
-bool Tracer::visible(const vec3& p, const SurfacePoint& sp, const Light& light, RayCounts& counts) const {
+bool Tracer::visible(const vec3& p, const SurfacePoint& sp, const Light& light,
+                     RayCounts& counts) const {
     if (!options_.shadows) return true;
     vec3 dir;
     const float t_max = light.feeler(p, dir);
@@ -96,7 +97,8 @@ vec3 Tracer::refracted(const Ray& r, const SurfacePoint& sp, int depth, float we
         return reflected(r, sp, depth, weight, counts);
     }
     ++counts.refracted;
-    return trace(Ray{offset_ray_origin(sp.p, -sp.geometric_normal), t.dir}, depth + 1, weight, counts);
+    return trace(Ray{offset_ray_origin(sp.p, -sp.geometric_normal), t.dir}, depth + 1, weight,
+                 counts);
 }
 
 }  // namespace rt

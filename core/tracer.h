@@ -44,7 +44,7 @@ struct Refraction {
 Refraction refract_dir(const vec3& d, const vec3& n, float eta_from, float eta_to);
 
 class Tracer {
-public:
+  public:
     Tracer(const Scene& scene, const TraceOptions& options) : scene_(scene), options_(options) {}
 
     // The colour seen along a camera ray (linear RGB).
@@ -56,12 +56,15 @@ public:
     // visible(p, l) (kd max(0, n.l) + ks max(0, r.v)^shininess) I_l.
     vec3 phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) const;
 
-private:
+  private:
     vec3 trace(const Ray& r, int depth, float weight, RayCounts& counts) const;
     vec3 shade(const Ray& r, const Hit& hit, int depth, float weight, RayCounts& counts) const;
-    vec3 reflected(const Ray& r, const SurfacePoint& sp, int depth, float weight, RayCounts& counts) const;
-    vec3 refracted(const Ray& r, const SurfacePoint& sp, int depth, float weight, RayCounts& counts) const;
-    bool visible(const vec3& p, const SurfacePoint& sp, const Light& light, RayCounts& counts) const;
+    vec3 reflected(const Ray& r, const SurfacePoint& sp, int depth, float weight,
+                   RayCounts& counts) const;
+    vec3 refracted(const Ray& r, const SurfacePoint& sp, int depth, float weight,
+                   RayCounts& counts) const;
+    bool visible(const vec3& p, const SurfacePoint& sp, const Light& light,
+                 RayCounts& counts) const;
 
     const Scene& scene_;
     TraceOptions options_;

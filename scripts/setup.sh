@@ -14,6 +14,8 @@ packages=(
   python3-glad                        # generates the OpenGL loader at build time
   libegl-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL on Mesa (llvmpipe)
   libosmesa6-dev                      # headless OSMesa
+  libglfw3-dev libimgui-dev libglx-mesa0  # the viewer: window, panel, GLX on Mesa
+  xvfb xdotool imagemagick            # the viewer's tests: X server, input, screen grabs
 )
 
 missing=()

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Set up, build with warnings as errors, and run the whole test suite.
+# Set up, build with warnings as errors, and run the whole test suite: unit, GL
+# (EGL and OSMesa), screenshot, command-line and GUI (Xvfb) tests. Then the headless
+# configuration (no GLFW, no X11, no viewer) is built and its tests run too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -7,4 +9,9 @@ scripts/build.sh -DRTVIEW_WERROR=ON
 status=0
 ctest --test-dir build --output-on-failure -j "$(nproc)" || status=$?
 [ -f build/golden_report/index.html ] && echo "screenshot report: build/golden_report/index.html"
+
+echo "== headless configuration (-DRTVIEW_BUILD_VIEWER=OFF)"
+cmake -S . -B build-headless -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTVIEW_WERROR=ON -DRTVIEW_BUILD_VIEWER=OFF >/dev/null
+cmake --build build-headless
+ctest --test-dir build-headless --output-on-failure -j "$(nproc)" || status=$?
 exit $status

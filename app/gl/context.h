@@ -10,19 +10,20 @@ namespace rt::gl {
 enum class Backend { kAuto, kEgl, kOsmesa };
 
 class Context {
-public:
+  public:
     virtual ~Context() = default;
     // "EGL surfaceless: llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6"
     const std::string& description() const { return description_; }
 
-protected:
+  protected:
     std::string description_;
 };
 
 // kAuto tries EGL first, then OSMesa. Throws rt::Error ("PROGRAM: --gl: ...") when no
 // context can be made, saying why each attempt failed.
 std::unique_ptr<Context> create_headless_context(Backend backend, const std::string& program);
-Backend parse_backend(const std::string& name, const std::string& program);  // "egl", "osmesa", "auto"
+Backend parse_backend(const std::string& name,
+                      const std::string& program);  // "egl", "osmesa", "auto"
 
 namespace detail {
 using ProcLoader = void* (*)(const char*);

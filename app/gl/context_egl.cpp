@@ -21,7 +21,8 @@ std::string egl_error(const char* what) {
 }
 
 EGLDisplay device_display() {
-    auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+    auto query_devices =
+        reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     if (!query_devices) return EGL_NO_DISPLAY;
     EGLint count = 0;
     if (!query_devices(0, nullptr, &count) || count <= 0) return EGL_NO_DISPLAY;
@@ -36,27 +37,36 @@ EGLDisplay device_display() {
 }
 
 class EglContext : public Context {
-public:
+  public:
     EglContext() {
-        display_ = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        display_ =
+            eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         EGLint major = 0, minor = 0;
         std::string platform = "EGL surfaceless";
         if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, &major, &minor)) {
             display_ = device_display();
             platform = "EGL device";
-            if (display_ == EGL_NO_DISPLAY) throw std::runtime_error("no surfaceless platform and no usable EGL device");
+            if (display_ == EGL_NO_DISPLAY)
+                throw std::runtime_error("no surfaceless platform and no usable EGL device");
         }
         if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)");
-        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                     EGL_CONTEXT_OPENGL_DEBUG, debug_output_requested() ? EGL_TRUE : EGL_FALSE,
+        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                     3,
+                                     EGL_CONTEXT_MINOR_VERSION,
+                                     3,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                     EGL_CONTEXT_OPENGL_DEBUG,
+                                     debug_output_requested() ? EGL_TRUE : EGL_FALSE,
                                      EGL_NONE};
         // No config: EGL_KHR_no_config_context, which Mesa has; no surface either.
         context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
         if (context_ == EGL_NO_CONTEXT) fail("eglCreateContext (OpenGL 3.3 core)");
-        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) fail("eglMakeCurrent");
+        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+            fail("eglMakeCurrent");
         try {
-            description_ = platform + ": " + load_gl(reinterpret_cast<ProcLoader>(eglGetProcAddress));
+            description_ =
+                platform + ": " + load_gl(reinterpret_cast<ProcLoader>(eglGetProcAddress));
         } catch (...) {
             release();
             throw;
@@ -65,7 +75,7 @@ public:
 
     ~EglContext() override { release(); }
 
-private:
+  private:
     [[noreturn]] void fail(const char* what) {
         const std::string message = egl_error(what);
         release();

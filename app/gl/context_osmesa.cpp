@@ -11,13 +11,22 @@ namespace rt::gl::detail {
 namespace {
 
 class OsmesaContext : public Context {
-public:
+  public:
     OsmesaContext() {
-        const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE,
-                                  OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                                  OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+        const int attributes[] = {OSMESA_FORMAT,
+                                  OSMESA_RGBA,
+                                  OSMESA_DEPTH_BITS,
+                                  24,
+                                  OSMESA_PROFILE,
+                                  OSMESA_CORE_PROFILE,
+                                  OSMESA_CONTEXT_MAJOR_VERSION,
+                                  3,
+                                  OSMESA_CONTEXT_MINOR_VERSION,
+                                  3,
+                                  0};
         context_ = OSMesaCreateContextAttribs(attributes, nullptr);
-        if (!context_) throw std::runtime_error("OSMesaCreateContextAttribs (OpenGL 3.3 core) failed");
+        if (!context_)
+            throw std::runtime_error("OSMesaCreateContextAttribs (OpenGL 3.3 core) failed");
         // OSMesa needs a buffer to be current; all rendering goes to FBOs, so 1x1 will do.
         if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
             OSMesaDestroyContext(context_);
@@ -33,7 +42,7 @@ public:
 
     ~OsmesaContext() override { OSMesaDestroyContext(context_); }
 
-private:
+  private:
     OSMesaContext context_ = nullptr;
     std::vector<unsigned char> buffer_ = std::vector<unsigned char>(4);
 };

@@ -16,11 +16,12 @@ std::atomic<std::uint64_t> g_errors{0};
 void GLAD_API_PTR on_debug_message(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei,
                                    const GLchar* message, const void*) {
     // Compile errors become rt::Error from Program, with the file name: not repeated here.
-    if (severity == GL_DEBUG_SEVERITY_NOTIFICATION || source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
+    if (severity == GL_DEBUG_SEVERITY_NOTIFICATION || source == GL_DEBUG_SOURCE_SHADER_COMPILER)
+        return;
     const bool error = type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR;
     if (error) g_errors.fetch_add(1);
-    std::fprintf(stderr, "GL debug: %s (source 0x%x, type 0x%x, id %u): %s\n", error ? "error" : "warning", source, type,
-                 id, message);
+    std::fprintf(stderr, "GL debug: %s (source 0x%x, type 0x%x, id %u): %s\n",
+                 error ? "error" : "warning", source, type, id, message);
 }
 
 }  // namespace
@@ -50,7 +51,8 @@ void check(const char* where) {
         std::snprintf(code, sizeof code, "0x%04x", e);
         errors += (errors.empty() ? "" : ", ") + std::string(code);
     }
-    if (!errors.empty()) throw std::runtime_error(std::string("OpenGL error ") + errors + " in " + where);
+    if (!errors.empty())
+        throw std::runtime_error(std::string("OpenGL error ") + errors + " in " + where);
 }
 
 }  // namespace rt::gl

@@ -8,15 +8,22 @@
 
 namespace rt::gl {
 
-Framebuffer::Framebuffer(Kind kind, int width, int height) : kind_(kind), width_(width), height_(height) {
+Framebuffer::Framebuffer(Kind kind, int width, int height)
+    : kind_(kind), width_(width), height_(height) {
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     const int attachments = kind == Kind::kColour ? 1 : 2;
-    glGenRenderbuffers(attachments, colour_);
+    glGenTextures(attachments, colour_);
     for (int i = 0; i < attachments; ++i) {
-        glBindRenderbuffer(GL_RENDERBUFFER, colour_[i]);
-        glRenderbufferStorage(GL_RENDERBUFFER, kind == Kind::kColour ? GL_RGBA32F : GL_R32UI, width, height);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), GL_RENDERBUFFER, colour_[i]);
+        glBindTexture(GL_TEXTURE_2D, colour_[i]);
+        const bool colour = kind == Kind::kColour;
+        glTexImage2D(GL_TEXTURE_2D, 0, colour ? GL_RGBA32F : GL_R32UI, width, height, 0,
+                     colour ? GL_RGBA : GL_RED_INTEGER, colour ? GL_FLOAT : GL_UNSIGNED_INT,
+                     nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i),
+                               GL_TEXTURE_2D, colour_[i], 0);
     }
     glGenRenderbuffers(1, &depth_);
     glBindRenderbuffer(GL_RENDERBUFFER, depth_);
@@ -32,7 +39,7 @@ Framebuffer::Framebuffer(Kind kind, int width, int height) : kind_(kind), width_
 
 Framebuffer::~Framebuffer() {
     glDeleteFramebuffers(1, &fbo_);
-    glDeleteRenderbuffers(2, colour_);
+    glDeleteTextures(2, colour_);
     glDeleteRenderbuffers(1, &depth_);
 }
 

@@ -9,7 +9,7 @@
 namespace rt::gl {
 
 class Framebuffer {
-public:
+  public:
     enum class Kind {
         kColour,     // one RGBA32F attachment: linear colour, read back unencoded
         kItemBuffer  // two R32UI attachments: object id + 1, triangle index
@@ -22,12 +22,14 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
+    // The colour attachments are textures, so a later pass can sample them.
+    GLuint texture(int attachment = 0) const { return colour_[attachment]; }
     void bind() const;  // as the draw target, with the viewport set and cleared
 
     Image read_colour() const;
     ItemBuffer read_item_buffer() const;
 
-private:
+  private:
     Kind kind_;
     int width_, height_;
     GLuint fbo_ = 0;

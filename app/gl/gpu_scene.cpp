@@ -21,7 +21,8 @@ struct Vertex {
 constexpr int kSphereLevels[] = {12, 16, 24, 32, 48, 64, 96, 128, 192, 256};
 
 float max_scale(const glm::mat4& m) {
-    return std::max({glm::length(glm::vec3(m[0])), glm::length(glm::vec3(m[1])), glm::length(glm::vec3(m[2]))});
+    return std::max(
+        {glm::length(glm::vec3(m[0])), glm::length(glm::vec3(m[1])), glm::length(glm::vec3(m[2]))});
 }
 
 }  // namespace
@@ -41,11 +42,13 @@ GpuMesh::GpuMesh(const TriangleMesh& mesh, bool smooth_faces) {
     glGenBuffers(1, &vbo_);
     glBindVertexArray(vao_);
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
+                 vertices.data(), GL_STATIC_DRAW);
     for (GLuint a = 0; a < 3; ++a) {
         glEnableVertexAttribArray(a);
-        glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
-                              reinterpret_cast<const void*>(static_cast<std::uintptr_t>(a * sizeof(glm::vec3))));
+        glVertexAttribPointer(
+            a, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(a * sizeof(glm::vec3))));
     }
     glBindVertexArray(0);
     check("GpuMesh upload");
@@ -62,7 +65,8 @@ void GpuMesh::draw(GLint first_vertex, GLsizei vertex_count) const {
 }
 
 GpuScene::GpuScene(const Scene& scene) : scene_(scene), bounds_(scene.bounds()) {
-    for (const TriangleMesh& mesh : scene.meshes) meshes_.push_back(std::make_unique<GpuMesh>(mesh));
+    for (const TriangleMesh& mesh : scene.meshes)
+        meshes_.push_back(std::make_unique<GpuMesh>(mesh));
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         if (const auto* tri = std::get_if<Triangle>(&scene.objects[i].shape)) {
             TriangleMesh m;
@@ -78,7 +82,8 @@ GpuScene::~GpuScene() = default;
 
 const GpuMesh& GpuScene::sphere_level(float radius_pixels) {
     const int wanted = sphere_segments_for(radius_pixels);
-    const int level = *std::find_if(std::begin(kSphereLevels), std::end(kSphereLevels) - 1, [&](int l) { return l >= wanted; });
+    const int level = *std::find_if(std::begin(kSphereLevels), std::end(kSphereLevels) - 1,
+                                    [&](int l) { return l >= wanted; });
     auto& mesh = spheres_[level];
     if (!mesh) mesh = std::make_unique<GpuMesh>(tessellate_unit_sphere(level), true);
     return *mesh;
@@ -96,13 +101,16 @@ DepthRange GpuScene::depth_range(const Camera& camera) const {
     range.far_plane = 3.0f * plane_extent(camera);
     // The near plane as far out as the nearest bounded object allows, for depth precision.
     float nearest = range.far_plane;
-    if (!bounds_.empty()) nearest = glm::length(glm::max(glm::max(bounds_.lo - camera.eye, camera.eye - bounds_.hi), glm::vec3(0.0f)));
+    if (!bounds_.empty())
+        nearest = glm::length(
+            glm::max(glm::max(bounds_.lo - camera.eye, camera.eye - bounds_.hi), glm::vec3(0.0f)));
     const float closest_allowed = std::min(range.far_plane * 1e-6f, camera.N);
     range.near_plane = std::clamp(0.5f * nearest, closest_allowed, camera.N);
     return range;
 }
 
-void GpuScene::add_mesh_draws(std::uint32_t object, const Object& o, const MeshRef& ref, std::vector<DrawItem>& out) const {
+void GpuScene::add_mesh_draws(std::uint32_t object, const Object& o, const MeshRef& ref,
+                              std::vector<DrawItem>& out) const {
     const TriangleMesh& mesh = scene_.meshes[ref.mesh];
     DrawItem item;
     item.mesh = meshes_[ref.mesh].get();
@@ -114,8 +122,10 @@ void GpuScene::add_mesh_draws(std::uint32_t object, const Object& o, const MeshR
     // the triangle index is the draw's base plus gl_PrimitiveID.
     for (std::uint32_t start = 0; start < count;) {
         std::uint32_t end = start + 1;
-        if (per_triangle) while (end < count && mesh.materials[end] == mesh.materials[start]) ++end;
-        else end = count;
+        if (per_triangle)
+            while (end < count && mesh.materials[end] == mesh.materials[start]) ++end;
+        else
+            end = count;
         item.material = per_triangle ? mesh.materials[start] : o.material;
         item.first_vertex = static_cast<GLint>(3 * start);
         item.vertex_count = static_cast<GLsizei>(3 * (end - start));
@@ -136,17 +146,21 @@ std::vector<DrawItem> GpuScene::draw_list(const Camera& camera) {
         item.object_id = i + 1;
         if (const auto* s = std::get_if<Sphere>(&o.shape)) {
             const glm::vec3 centre = glm::vec3(item.model * glm::vec4(s->centre, 1.0f));
-            item.mesh = &sphere_level(projected_radius_pixels(camera, centre, s->radius * max_scale(item.model)));
-            item.shape = glm::scale(glm::translate(glm::mat4(1.0f), s->centre), glm::vec3(s->radius));
+            item.mesh = &sphere_level(
+                projected_radius_pixels(camera, centre, s->radius * max_scale(item.model)));
+            item.shape =
+                glm::scale(glm::translate(glm::mat4(1.0f), s->centre), glm::vec3(s->radius));
             item.sphere = true;
         } else if (const auto* p = std::get_if<Plane>(&o.shape)) {
             // The unit quad in z = 0, turned into the plane's frame, centred under the eye.
             glm::vec3 t1, t2;
             tangent_frame(p->normal, t1, t2);
-            const glm::vec3 eye = o.transform ? glm::vec3(o.transform->inv * glm::vec4(camera.eye, 1.0f)) : camera.eye;
+            const glm::vec3 eye = o.transform
+                                      ? glm::vec3(o.transform->inv * glm::vec4(camera.eye, 1.0f))
+                                      : camera.eye;
             const glm::vec3 centre = eye - (glm::dot(eye, p->normal) - p->offset) * p->normal;
-            item.shape = glm::mat4(glm::vec4(extent * t1, 0.0f), glm::vec4(extent * t2, 0.0f), glm::vec4(p->normal, 0.0f),
-                                   glm::vec4(centre, 1.0f));
+            item.shape = glm::mat4(glm::vec4(extent * t1, 0.0f), glm::vec4(extent * t2, 0.0f),
+                                   glm::vec4(p->normal, 0.0f), glm::vec4(centre, 1.0f));
             item.mesh = quad_.get();
             item.plane = p;
         } else if (std::holds_alternative<Triangle>(o.shape)) {

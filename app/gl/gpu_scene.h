@@ -14,7 +14,7 @@
 namespace rt::gl {
 
 class GpuMesh {
-public:
+  public:
     // Non-indexed triangles: position, shading normal and face normal per corner.
     // With smooth_faces the face normal is the shading normal (analytic spheres).
     explicit GpuMesh(const TriangleMesh& mesh, bool smooth_faces = false);
@@ -25,7 +25,7 @@ public:
     void draw(GLint first_vertex, GLsizei vertex_count) const;
     GLsizei vertex_count() const { return vertex_count_; }
 
-private:
+  private:
     GLuint vao_ = 0, vbo_ = 0;
     GLsizei vertex_count_ = 0;
 };
@@ -37,8 +37,8 @@ struct DrawItem {
     glm::mat4 model{1.0f};  // object space -> world (the object's transform)
     glm::mat4 shape{1.0f};  // mesh vertices -> object space (sphere centre and radius, plane frame)
     std::uint32_t material = 0;
-    std::uint32_t object_id = 0;  // object index + 1, as the item buffer stores it
-    std::uint32_t prim_base = 0;  // index of the draw's first triangle in its mesh
+    std::uint32_t object_id = 0;   // object index + 1, as the item buffer stores it
+    std::uint32_t prim_base = 0;   // index of the draw's first triangle in its mesh
     const Plane* plane = nullptr;  // for the checker's in-plane coordinates
     bool sphere = false;           // the mesh is the unit sphere: normals are its positions
 };
@@ -49,21 +49,22 @@ struct DepthRange {
 };
 
 class GpuScene {
-public:
+  public:
     explicit GpuScene(const Scene& scene);
     ~GpuScene();
 
     std::vector<DrawItem> draw_list(const Camera& camera);
     DepthRange depth_range(const Camera& camera) const;
 
-private:
+  private:
     const GpuMesh& sphere_level(float radius_pixels);
     float plane_extent(const Camera& camera) const;
-    void add_mesh_draws(std::uint32_t object, const Object& o, const MeshRef& ref, std::vector<DrawItem>& out) const;
+    void add_mesh_draws(std::uint32_t object, const Object& o, const MeshRef& ref,
+                        std::vector<DrawItem>& out) const;
 
     const Scene& scene_;
     Aabb bounds_;
-    std::vector<std::unique_ptr<GpuMesh>> meshes_;                  // per scene mesh
+    std::vector<std::unique_ptr<GpuMesh>> meshes_;                 // per scene mesh
     std::map<std::uint32_t, std::unique_ptr<GpuMesh>> triangles_;  // per triangle object
     std::map<int, std::unique_ptr<GpuMesh>> spheres_;              // per level of detail
     std::unique_ptr<GpuMesh> quad_;

@@ -14,7 +14,8 @@ namespace {
 
 std::string read_source(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
-    if (!in) throw Error(file.string(), "open", "cannot read the shader (is RTVIEW_SHADER_DIR right?)");
+    if (!in)
+        throw Error(file.string(), "open", "cannot read the shader (is RTVIEW_SHADER_DIR right?)");
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
@@ -22,7 +23,8 @@ std::string read_source(const std::filesystem::path& file) {
 
 std::string info_log(GLuint object, bool is_program) {
     GLint length = 0;
-    is_program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    is_program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length)
+               : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
     std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
     is_program ? glGetProgramInfoLog(object, length, nullptr, log.data())
                : glGetShaderInfoLog(object, length, nullptr, log.data());
@@ -33,9 +35,11 @@ std::string info_log(GLuint object, bool is_program) {
 [[noreturn]] void compile_failed(const std::filesystem::path& file, const std::string& log) {
     static const std::regex first_error(R"((\d+):(\d+)\((\d+)\): error: ([^\n]*))");
     std::smatch m;
-    if (std::regex_search(log, m, first_error)) throw Error(file.string(), "line " + m[2].str(), m[4].str());
+    if (std::regex_search(log, m, first_error))
+        throw Error(file.string(), "line " + m[2].str(), m[4].str());
     const std::string first_line = log.substr(0, log.find('\n'));
-    throw Error(file.string(), "compile", first_line.empty() ? "the shader does not compile" : first_line);
+    throw Error(file.string(), "compile",
+                first_line.empty() ? "the shader does not compile" : first_line);
 }
 
 GLuint compile(GLenum stage, const std::filesystem::path& file) {
@@ -61,7 +65,8 @@ std::filesystem::path shader_dir() {
     return RTVIEW_SHADER_DIR;
 }
 
-Program::Program(const std::filesystem::path& vertex_file, const std::filesystem::path& fragment_file) {
+Program::Program(const std::filesystem::path& vertex_file,
+                 const std::filesystem::path& fragment_file) {
     const GLuint vs = compile(GL_VERTEX_SHADER, vertex_file);
     GLuint fs = 0;
     try {
@@ -90,7 +95,8 @@ Program::~Program() { glDeleteProgram(id_); }
 GLint Program::location(const char* name) {
     const auto it = locations_.find(name);
     if (it != locations_.end()) return it->second;
-    const GLint at = glGetUniformLocation(id_, name);  // -1 (ignored by glUniform) if optimised away
+    const GLint at =
+        glGetUniformLocation(id_, name);  // -1 (ignored by glUniform) if optimised away
     locations_.emplace(name, at);
     return at;
 }
@@ -98,7 +104,9 @@ GLint Program::location(const char* name) {
 void Program::set(const char* name, int value) { glUniform1i(location(name), value); }
 void Program::set(const char* name, unsigned value) { glUniform1ui(location(name), value); }
 void Program::set(const char* name, float value) { glUniform1f(location(name), value); }
-void Program::set(const char* name, const glm::vec3& value) { glUniform3fv(location(name), 1, glm::value_ptr(value)); }
+void Program::set(const char* name, const glm::vec3& value) {
+    glUniform3fv(location(name), 1, glm::value_ptr(value));
+}
 void Program::set(const char* name, const glm::mat3& value) {
     glUniformMatrix3fv(location(name), 1, GL_FALSE, glm::value_ptr(value));
 }

@@ -19,7 +19,7 @@ namespace rt::gl {
 std::filesystem::path shader_dir();
 
 class Program {
-public:
+  public:
     Program(const std::filesystem::path& vertex_file, const std::filesystem::path& fragment_file);
     ~Program();
     Program(const Program&) = delete;
@@ -33,7 +33,7 @@ public:
     void set(const char* name, const glm::mat3& value);
     void set(const char* name, const glm::mat4& value);
 
-private:
+  private:
     GLint location(const char* name);
 
     GLuint id_ = 0;

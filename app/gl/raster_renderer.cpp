@@ -17,13 +17,15 @@ RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& 
 void RasterRenderer::set_camera(Program& program, const Camera& camera) {
     const DepthRange depth = gpu_.depth_range(camera);
     program.use();
-    program.set("u_view_projection", camera.projection(depth.near_plane, depth.far_plane) * camera.view());
+    program.set("u_view_projection",
+                camera.projection(depth.near_plane, depth.far_plane) * camera.view());
     program.set("u_eye", camera.eye);
 }
 
 void RasterRenderer::set_object(Program& program, const DrawItem& item, const Camera& camera) {
     const glm::mat4 to_world = item.model * item.shape;
-    if (item.sphere) program.set("u_eye_local", glm::vec3(glm::inverse(to_world) * glm::vec4(camera.eye, 1.0f)));
+    if (item.sphere)
+        program.set("u_eye_local", glm::vec3(glm::inverse(to_world) * glm::vec4(camera.eye, 1.0f)));
     program.set("u_model", item.model);
     program.set("u_shape", item.shape);
     program.set("u_normal_matrix", glm::transpose(glm::inverse(glm::mat3(to_world))));
@@ -88,27 +90,36 @@ void RasterRenderer::draw_ids(const Camera& camera) {
     check("RasterRenderer::draw_ids");
 }
 
-Framebuffer& RasterRenderer::target(std::unique_ptr<Framebuffer>& fb, Framebuffer::Kind kind, const Camera& camera) {
+Framebuffer& RasterRenderer::target(std::unique_ptr<Framebuffer>& fb, Framebuffer::Kind kind,
+                                    const Camera& camera) {
     if (!fb || fb->width() != camera.cols || fb->height() != camera.rows)
         fb = std::make_unique<Framebuffer>(kind, camera.cols, camera.rows);
     return *fb;
 }
 
-Image RasterRenderer::render(const Camera& camera) {
+const Framebuffer& RasterRenderer::render_to_texture(const Camera& camera) {
     Framebuffer& fb = target(colour_target_, Framebuffer::Kind::kColour, camera);
     fb.bind();
     const glm::vec3 bg = scene_.background;
     glClearColor(bg.x, bg.y, bg.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     draw(camera);
-    return fb.read_colour();
+    return fb;
 }
 
-ItemBuffer RasterRenderer::render_item_buffer(const Camera& camera) {
+const Framebuffer& RasterRenderer::render_item_buffer_to_texture(const Camera& camera) {
     Framebuffer& fb = target(id_target_, Framebuffer::Kind::kItemBuffer, camera);
     fb.bind();
     draw_ids(camera);
-    return fb.read_item_buffer();
+    return fb;
+}
+
+Image RasterRenderer::render(const Camera& camera) {
+    return render_to_texture(camera).read_colour();
+}
+
+ItemBuffer RasterRenderer::render_item_buffer(const Camera& camera) {
+    return render_item_buffer_to_texture(camera).read_item_buffer();
 }
 
 }  // namespace rt::gl

@@ -16,26 +16,32 @@
 namespace rt::gl {
 
 class RasterRenderer {
-public:
+  public:
     static constexpr int kMaxLights = 16;  // as in shaders/phong.frag
 
     // Needs a current GL context; throws rt::Error on a shader that is missing or broken.
-    explicit RasterRenderer(const Scene& scene, const std::filesystem::path& shaders = shader_dir());
+    explicit RasterRenderer(const Scene& scene,
+                            const std::filesystem::path& shaders = shader_dir());
 
     // Off-screen at the camera's resolution, read back: linear RGB, bottom row first.
     Image render(const Camera& camera);
     // Object id + 1 and triangle index per pixel, read back.
     ItemBuffer render_item_buffer(const Camera& camera);
 
-    // The same two passes into whatever framebuffer is bound (the viewer's window).
+    // The same passes, left on the GPU: their off-screen targets, for a viewer to sample.
+    const Framebuffer& render_to_texture(const Camera& camera);
+    const Framebuffer& render_item_buffer_to_texture(const Camera& camera);
+
+    // The two passes into whatever framebuffer is bound.
     void draw(const Camera& camera);
     void draw_ids(const Camera& camera);
 
-private:
+  private:
     void set_camera(Program& program, const Camera& camera);
     void set_material(const Material& m, const DrawItem& item);
     void set_object(Program& program, const DrawItem& item, const Camera& camera);
-    Framebuffer& target(std::unique_ptr<Framebuffer>& fb, Framebuffer::Kind kind, const Camera& camera);
+    Framebuffer& target(std::unique_ptr<Framebuffer>& fb, Framebuffer::Kind kind,
+                        const Camera& camera);
 
     const Scene& scene_;
     GpuScene gpu_;

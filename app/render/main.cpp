@@ -18,15 +18,19 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     std::string item_buffer = "off";
     app.add_option("scene", o.scene, "Scene file (.json or .obj)")->required();
     app.add_option("-o,--output", o.output, "Output image (.png or .exr); default out/SCENE.png");
-    app.add_option("--mode", o.mode, "trace, raster, both (raster, traced and difference) or itembuffer")
+    app.add_option("--mode", o.mode,
+                   "trace, raster, both (raster, traced and difference) or itembuffer")
         ->check(CLI::IsMember({"trace", "raster", "both", "itembuffer"}));
     app.add_option("--gl", o.gl, "OpenGL context: egl, osmesa, or auto (EGL, then OSMesa)")
         ->check(CLI::IsMember({"egl", "osmesa", "auto"}));
-    app.add_option("--item-buffer", item_buffer, "Primary hits from the raster item buffer: on or off")
+    app.add_option("--item-buffer", item_buffer,
+                   "Primary hits from the raster item buffer: on or off")
         ->check(CLI::IsMember({"on", "off"}));
     app.add_option("--size", o.size, "Image size WxH (default: the scene's resolution)");
-    app.add_option("--threads", o.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
-    app.add_option("--max-depth", o.trace.max_depth, "Maximum reflection/refraction depth")->check(CLI::Range(0, 64));
+    app.add_option("--threads", o.threads, "Worker threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    app.add_option("--max-depth", o.trace.max_depth, "Maximum reflection/refraction depth")
+        ->check(CLI::Range(0, 64));
     app.add_flag("--no-shadows", no_shadows, "Trace no shadow feelers");
     app.add_flag("--no-reflections", no_reflections, "Trace no reflected rays");
     app.add_flag("--no-refractions", no_refractions, "Trace no refracted rays");

@@ -9,9 +9,9 @@ namespace rtrender {
 
 struct Options {
     std::string scene;
-    std::string output;  // empty: out/SCENE.png
-    std::string size;    // WxH, empty: the scene's
-    std::string stats;   // JSON file, empty: none
+    std::string output;          // empty: out/SCENE.png
+    std::string size;            // WxH, empty: the scene's
+    std::string stats;           // JSON file, empty: none
     std::string mode = "trace";  // trace | raster | both | itembuffer
     std::string gl = "auto";     // egl | osmesa | auto
     bool item_buffer = false;

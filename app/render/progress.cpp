@@ -5,11 +5,13 @@
 
 namespace rtrender {
 
-ProgressBar::ProgressBar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+ProgressBar::ProgressBar(bool enabled)
+    : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
 
 void ProgressBar::update(int done, int total) {
     if (!enabled_ || total <= 0) return;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if (!shown_ && elapsed < 1.0) return;
     const int percent = done * 100 / total;
     if (percent == last_percent_) return;

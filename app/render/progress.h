@@ -7,12 +7,12 @@
 namespace rtrender {
 
 class ProgressBar {
-public:
+  public:
     explicit ProgressBar(bool enabled);
     void update(int done, int total);  // called with the render's progress
     void finish();
 
-private:
+  private:
     bool enabled_;
     bool shown_ = false;
     int last_percent_ = -1;

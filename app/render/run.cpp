@@ -26,7 +26,9 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 std::optional<std::pair<int, int>> parse_size(const std::string& text) {
     int w = 0, h = 0;
@@ -41,7 +43,9 @@ std::optional<std::pair<int, int>> parse_size(const std::string& text) {
 
 // OUT.png, or for --mode both OUT.raster.png, OUT.trace.png and OUT.diff.png.
 fs::path output_path(const Options& o, const char* part = nullptr) {
-    fs::path base = o.output.empty() ? fs::path("out") / (fs::path(o.scene).stem().string() + ".png") : fs::path(o.output);
+    fs::path base = o.output.empty()
+                        ? fs::path("out") / (fs::path(o.scene).stem().string() + ".png")
+                        : fs::path(o.output);
     if (part) base.replace_filename(base.stem().string() + "." + part + base.extension().string());
     return base;
 }
@@ -51,19 +55,21 @@ void write(const rt::Image& image, const fs::path& path, const Options& o) {
     if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
     if (ec) throw rt::Error(path.string(), "output", "cannot create directory: " + ec.message());
     rt::write_image(image, path);
-    if (!o.quiet) std::printf("wrote %s (%dx%d)\n", path.string().c_str(), image.width, image.height);
+    if (!o.quiet)
+        std::printf("wrote %s (%dx%d)\n", path.string().c_str(), image.width, image.height);
 }
 
 class Job {
-public:
+  public:
     explicit Job(const Options& o) : o_(o) {}
 
     int run();
 
-private:
+  private:
     rt::gl::RasterRenderer& raster();
     rt::Image trace();
-    rt::Image render_traced(const rt::ItemBuffer* item_buffer, rt::RenderStats& stats, const char* label);
+    rt::Image render_traced(const rt::ItemBuffer* item_buffer, rt::RenderStats& stats,
+                            const char* label);
     void report_diff(const rt::Image& raster_image, const rt::Image& traced);
     void write_stats();
 
@@ -77,29 +83,34 @@ private:
 
 rt::gl::RasterRenderer& Job::raster() {
     if (!raster_) {
-        context_ = rt::gl::create_headless_context(rt::gl::parse_backend(o_.gl, "rtrender"), "rtrender");
+        context_ =
+            rt::gl::create_headless_context(rt::gl::parse_backend(o_.gl, "rtrender"), "rtrender");
         stats_["gl"] = context_->description();
         if (!o_.quiet) std::printf("OpenGL: %s\n", context_->description().c_str());
         raster_ = std::make_unique<rt::gl::RasterRenderer>(loaded_.scene);
         if (loaded_.scene.lights.size() > rt::gl::RasterRenderer::kMaxLights)
-            std::cerr << o_.scene << ": lights: the raster view uses the first " << rt::gl::RasterRenderer::kMaxLights
-                      << " of " << loaded_.scene.lights.size() << " lights\n";
+            std::cerr << o_.scene << ": lights: the raster view uses the first "
+                      << rt::gl::RasterRenderer::kMaxLights << " of " << loaded_.scene.lights.size()
+                      << " lights\n";
     }
     return *raster_;
 }
 
-rt::Image Job::render_traced(const rt::ItemBuffer* item_buffer, rt::RenderStats& stats, const char* label) {
+rt::Image Job::render_traced(const rt::ItemBuffer* item_buffer, rt::RenderStats& stats,
+                             const char* label) {
     rt::RenderOptions options;
     options.threads = o_.threads;
     options.trace = o_.trace;
     ProgressBar bar(!o_.quiet && isatty(STDERR_FILENO));
-    rt::Image image = rt::render(loaded_.scene, options, &stats, [&](int done, int total) { bar.update(done, total); }, {},
-                                 item_buffer);
+    rt::Image image = rt::render(
+        loaded_.scene, options, &stats, [&](int done, int total) { bar.update(done, total); }, {},
+        item_buffer);
     bar.finish();
     nonfinite_ += stats.nonfinite_pixels;
     if (!o_.quiet)
-        std::printf("%s: %.3f s (primary %.3f s, secondary %.3f s) on %d threads, %.2f Mrays/s\n", label, stats.seconds,
-                    stats.primary_seconds, stats.secondary_seconds, stats.threads, stats.mrays_per_s());
+        std::printf("%s: %.3f s (primary %.3f s, secondary %.3f s) on %d threads, %.2f Mrays/s\n",
+                    label, stats.seconds, stats.primary_seconds, stats.secondary_seconds,
+                    stats.threads, stats.mrays_per_s());
     return image;
 }
 
@@ -115,13 +126,16 @@ rt::Image Job::trace() {
         ib = raster().render_item_buffer(loaded_.scene.camera);
         stats_["item_buffer_seconds"] = seconds_since(start);
     }
-    rt::Image image = render_traced(ib ? &*ib : nullptr, stats, ib ? "traced with item buffer" : "traced");
+    rt::Image image =
+        render_traced(ib ? &*ib : nullptr, stats, ib ? "traced with item buffer" : "traced");
     stats_["trace_seconds"] = stats.seconds;
     stats_["primary_seconds"] = stats.primary_seconds;
     stats_["secondary_seconds"] = stats.secondary_seconds;
     stats_["threads"] = stats.threads;
-    stats_["rays"] = {{"primary", stats.rays.primary},     {"shadow", stats.rays.shadow},
-                      {"reflected", stats.rays.reflected}, {"refracted", stats.rays.refracted},
+    stats_["rays"] = {{"primary", stats.rays.primary},
+                      {"shadow", stats.rays.shadow},
+                      {"reflected", stats.rays.reflected},
+                      {"refracted", stats.rays.refracted},
                       {"total", stats.rays.total()}};
     stats_["mrays_per_s"] = stats.mrays_per_s();
     stats_["nonfinite_pixels"] = stats.nonfinite_pixels;
@@ -138,11 +152,15 @@ rt::Image Job::trace() {
     stats_["reference_primary_seconds"] = reference.primary_seconds;
     stats_["primary_seconds_saved"] = saved;
     if (!o_.quiet)
-        std::printf("item buffer: raster pass and read-back %.3f s, primary rays %.3f s instead of %.3f s: net %s %.3f s; "
-                    "%llu pixels fell back to full traversal, %llu of %zu pixels disagree (%.4f%%)\n",
-                    ib_seconds, stats.primary_seconds, reference.primary_seconds, saved >= 0 ? "saving" : "LOSS",
-                    std::abs(saved), static_cast<unsigned long long>(stats.item_buffer_fallbacks),
-                    static_cast<unsigned long long>(diff.pixels_over), image.pixels.size(), 100.0 * diff.share_over);
+        std::printf(
+            "item buffer: raster pass and read-back %.3f s, primary rays %.3f s instead of %.3f s: "
+            "net %s %.3f s; "
+            "%llu pixels fell back to full traversal, %llu of %zu pixels disagree (%.4f%%)\n",
+            ib_seconds, stats.primary_seconds, reference.primary_seconds,
+            saved >= 0 ? "saving" : "LOSS", std::abs(saved),
+            static_cast<unsigned long long>(stats.item_buffer_fallbacks),
+            static_cast<unsigned long long>(diff.pixels_over), image.pixels.size(),
+            100.0 * diff.share_over);
     return image;
 }
 
@@ -150,14 +168,19 @@ void Job::report_diff(const rt::Image& raster_image, const rt::Image& traced) {
     const rt::ImageDiff d = rt::compare_images(raster_image, traced);
     const float scale = static_cast<float>(std::max(d.max_error, 1.0 / 255.0));
     write(rt::difference_image(raster_image, traced, scale), output_path(o_, "diff"), o_);
-    stats_["diff"] = {{"mean_abs_error", d.mean_abs_error}, {"rms", d.rms},
+    stats_["diff"] = {{"mean_abs_error", d.mean_abs_error},
+                      {"rms", d.rms},
                       {"psnr_db", std::isfinite(d.psnr_db) ? d.psnr_db : 999.0},
-                      {"max_error", d.max_error}, {"threshold", d.threshold}, {"share_over_threshold", d.share_over},
+                      {"max_error", d.max_error},
+                      {"threshold", d.threshold},
+                      {"share_over_threshold", d.share_over},
                       {"scale", scale}};
     if (!o_.quiet)
-        std::printf("raster vs traced: mean abs error %.4f, RMS %.4f, PSNR %.2f dB, %.2f%% of pixels differ by more than "
-                    "%.0f/255 (diff scale 0 to %.3f)\n",
-                    d.mean_abs_error, d.rms, d.psnr_db, 100.0 * d.share_over, d.threshold * 255.0, scale);
+        std::printf(
+            "raster vs traced: mean abs error %.4f, RMS %.4f, PSNR %.2f dB, %.2f%% of pixels "
+            "differ by more than "
+            "%.0f/255 (diff scale 0 to %.3f)\n",
+            d.mean_abs_error, d.rms, d.psnr_db, 100.0 * d.share_over, d.threshold * 255.0, scale);
 }
 
 void Job::write_stats() {
@@ -180,7 +203,8 @@ int Job::run() {
         throw rt::Error(main_output.string(), "-o", "unsupported format; use .png or .exr");
     std::optional<std::pair<int, int>> size;
     if (!o_.size.empty() && !(size = parse_size(o_.size)))
-        throw rt::Error("rtrender", "--size", "expected WxH between 1x1 and 16384x16384, got \"" + o_.size + "\"");
+        throw rt::Error("rtrender", "--size",
+                        "expected WxH between 1x1 and 16384x16384, got \"" + o_.size + "\"");
 
     auto start = Clock::now();
     loaded_ = rt::load_scene(o_.scene);
@@ -212,7 +236,8 @@ int Job::run() {
     }
     if (!o_.stats.empty()) write_stats();
     if (nonfinite_ > 0) {
-        std::cerr << o_.scene << ": render: " << nonfinite_ << " pixels were NaN or Inf (written black)\n";
+        std::cerr << o_.scene << ": render: " << nonfinite_
+                  << " pixels were NaN or Inf (written black)\n";
         return 1;
     }
     return 0;

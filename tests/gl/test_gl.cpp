@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 
+#include "../unit/test_util.h"
 #include "app/gl/context.h"
 #include "app/gl/debug.h"
 #include "app/gl/raster_renderer.h"
@@ -12,21 +13,20 @@
 #include "core/error.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
-#include "../unit/test_util.h"
 
 namespace rt {
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 namespace gl {
-void PrintTo(Backend b, std::ostream* os) { *os << (b == Backend::kEgl ? "EGL" : b == Backend::kOsmesa ? "OSMesa" : "auto"); }
+void PrintTo(Backend b, std::ostream* os) {
+    *os << (b == Backend::kEgl ? "EGL" : b == Backend::kOsmesa ? "OSMesa" : "auto");
+}
 }  // namespace gl
 
 namespace {
 
 class Gl : public ::testing::TestWithParam<gl::Backend> {
-protected:
+  protected:
     void SetUp() override { context_ = gl::create_headless_context(GetParam(), "rt_gl_tests"); }
     void TearDown() override {
         EXPECT_EQ(gl::debug_error_count(), errors_before_) << "KHR_debug reported GL errors";
@@ -48,7 +48,8 @@ TEST_P(Gl, ContextIsCoreProfile33OrLater) {
     EXPECT_TRUE(gl::debug_output_requested()) << "the tests run with RTVIEW_GL_DEBUG=1";
 }
 
-const char* const kScenes[] = {"tutorial.json", "whitted.json", "cornell.json", "many_spheres.json"};
+const char* const kScenes[] = {"tutorial.json", "whitted.json", "cornell.json",
+                               "many_spheres.json"};
 
 // With shadows, reflection and refraction off, the tracer computes exactly what the
 // raster pipeline computes. Inside objects (away from any edge in the item buffer) the
@@ -71,7 +72,8 @@ TEST_P(Gl, RasterEqualsLocalTracingAwayFromSilhouettes) {
                 ++interior;
                 const vec3 a = r.at(x, y), b = t.at(x, y);
                 float d = 0.0f;
-                for (int k = 0; k < 3; ++k) d = std::max(d, std::fabs(srgb_encode(a[k]) - srgb_encode(b[k])));
+                for (int k = 0; k < 3; ++k)
+                    d = std::max(d, std::fabs(srgb_encode(a[k]) - srgb_encode(b[k])));
                 interior_off += d > 2.0f / 255.0f;
             }
         }
@@ -137,10 +139,12 @@ TEST_P(Gl, ItemBufferImagesAgreeWithFullTraversal) {
 }
 
 TEST_P(Gl, BrokenShaderIsALocatedError) {
-    const auto dir = test::temp_dir(std::string("shaders_") + (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
+    const auto dir = test::temp_dir(std::string("shaders_") +
+                                    (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
     for (const char* f : {"raster.vert", "itembuffer.frag"})
         std::filesystem::copy_file(gl::shader_dir() / f, dir / f);
-    test::write_file(dir / "phong.frag", "#version 330 core\nout vec4 c;\nvoid main() {\n  c = vec4(1.0) +;\n}\n");
+    test::write_file(dir / "phong.frag",
+                     "#version 330 core\nout vec4 c;\nvoid main() {\n  c = vec4(1.0) +;\n}\n");
     const Scene scene = load("tutorial.json", 32, 32);
     try {
         gl::RasterRenderer raster(scene, dir);
@@ -154,7 +158,9 @@ TEST_P(Gl, BrokenShaderIsALocatedError) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Headless, Gl, ::testing::Values(gl::Backend::kEgl, gl::Backend::kOsmesa),
-                         [](const auto& param_info) { return param_info.param == gl::Backend::kEgl ? "egl" : "osmesa"; });
+                         [](const auto& param_info) {
+                             return param_info.param == gl::Backend::kEgl ? "egl" : "osmesa";
+                         });
 
 }  // namespace
 }  // namespace rt

@@ -39,7 +39,8 @@ TEST(Bvh, MeshHitsMatchBruteForce) {
         std::uint32_t best_tri = 0;
         for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
             const auto& tri = mesh.triangles[t];
-            if (auto h = intersect_triangle(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]], ray, best)) {
+            if (auto h = intersect_triangle(mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                            mesh.positions[tri[2]], ray, best)) {
                 best = h->t;
                 best_tri = t;
             }
@@ -52,7 +53,8 @@ TEST(Bvh, MeshHitsMatchBruteForce) {
         ++hits;
         EXPECT_EQ(hit.prim, best_tri) << "ray " << i;
         EXPECT_FLOAT_EQ(hit.t, best) << "ray " << i;
-        EXPECT_FALSE(mesh.occluded(ray, best * 0.999f)) << "nothing is closer than the closest hit, ray " << i;
+        EXPECT_FALSE(mesh.occluded(ray, best * 0.999f))
+            << "nothing is closer than the closest hit, ray " << i;
     }
     EXPECT_GT(hits, 500);  // the test means something only if many rays hit
 }
@@ -62,13 +64,15 @@ TEST(Bvh, SceneHitsMatchTestingEveryObject) {
     Scene scene;
     scene.materials.push_back(Material{});
     std::uniform_real_distribution<float> radius(0.1f, 1.0f);
-    for (int i = 0; i < 500; ++i) scene.objects.push_back(Object{"s", Sphere{random_point(rng, 12.0f), radius(rng)}, 0, {}});
+    for (int i = 0; i < 500; ++i)
+        scene.objects.push_back(Object{"s", Sphere{random_point(rng, 12.0f), radius(rng)}, 0, {}});
     scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -13}, 0, {}});
     scene.build();
     for (int i = 0; i < 3000; ++i) {
         const Ray ray{random_point(rng, 15.0f), random_point(rng, 1.0f)};
         Hit brute;
-        for (std::uint32_t o = 0; o < scene.objects.size(); ++o) scene.intersect_object(o, ray, brute);
+        for (std::uint32_t o = 0; o < scene.objects.size(); ++o)
+            scene.intersect_object(o, ray, brute);
         Hit hit;
         ASSERT_EQ(scene.intersect(ray, hit), brute.found()) << "ray " << i;
         EXPECT_EQ(hit.object, brute.object) << "ray " << i;

@@ -11,7 +11,8 @@ namespace {
 Image gradient() {
     Image image(8, 4);
     for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 8; ++x) image.at(x, y) = {static_cast<float>(x) / 7.0f, static_cast<float>(y) / 3.0f, 0.25f};
+        for (int x = 0; x < 8; ++x)
+            image.at(x, y) = {static_cast<float>(x) / 7.0f, static_cast<float>(y) / 3.0f, 0.25f};
     image.at(0, 0) = {1.0f, 0.0f, 0.0f};  // bottom left is red
     return image;
 }
@@ -38,7 +39,8 @@ TEST(Image, PngIsSrgbWithTheBottomRowLast) {
     ASSERT_EQ(back.height, 4);
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
         for (int k = 0; k < 3; ++k)
-            EXPECT_NEAR(srgb_encode(back.pixels[i][k]), srgb_encode(image.pixels[i][k]), 0.5f / 255.0f + 1e-6f);
+            EXPECT_NEAR(srgb_encode(back.pixels[i][k]), srgb_encode(image.pixels[i][k]),
+                        0.5f / 255.0f + 1e-6f);
     EXPECT_FLOAT_EQ(back.at(0, 0).x, 1.0f);
 }
 
@@ -49,7 +51,8 @@ TEST(Image, ExrKeepsLinearValuesAboveOne) {
     write_image(image, dir / "g.exr");
     const Image back = read_image(dir / "g.exr");
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(back.pixels[i][k], image.pixels[i][k], 1e-3f * (1.0f + image.pixels[i][k]));
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(back.pixels[i][k], image.pixels[i][k], 1e-3f * (1.0f + image.pixels[i][k]));
 }
 
 TEST(Image, UnwritablePathIsAnError) {

@@ -9,7 +9,8 @@ namespace rt {
 namespace {
 
 TEST(Loader, AssetScenesLoadWithoutWarnings) {
-    for (const char* name : {"tutorial.json", "whitted.json", "cornell.json", "many_spheres.json"}) {
+    for (const char* name :
+         {"tutorial.json", "whitted.json", "cornell.json", "many_spheres.json"}) {
         const LoadedScene loaded = load_scene(test::scene_path(name));
         EXPECT_TRUE(loaded.warnings.empty()) << name;
         EXPECT_FALSE(loaded.scene.objects.empty()) << name;
@@ -68,7 +69,8 @@ TEST_P(BadScene, NamesTheFileThePlaceAndTheProblem) {
         FAIL() << "loaded without error";
     } catch (const Error& e) {
         EXPECT_NE(e.file().find(".json"), std::string::npos) << e.what();
-        EXPECT_EQ(e.where().rfind(c.where, 0), 0u) << "where should start with " << c.where << ": " << e.what();
+        EXPECT_EQ(e.where().rfind(c.where, 0), 0u)
+            << "where should start with " << c.where << ": " << e.what();
         EXPECT_NE(e.detail().find(c.detail), std::string::npos) << e.what();
         EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line";
     }
@@ -78,29 +80,45 @@ const std::vector<BadCase> kBadCases = {
     {"syntax", "{\n  \"camera\": {\n    \"eye\": [0, 0 5]\n", "line 3, column 18", "syntax error"},
     {"empty", "  \n", "line 1", "empty"},
     {"unknown_top_key", R"({"camera": {}, "objets": []})", "/objets", "did you mean \"objects\""},
-    {"misspelt_material_key", with_camera(R"("materials": {"m": {"reflectivty": 0.5}}, "objects": [])"),
+    {"misspelt_material_key",
+     with_camera(R"("materials": {"m": {"reflectivty": 0.5}}, "objects": [])"),
      "/materials/m/reflectivty", "did you mean \"reflectivity\""},
-    {"unknown_object", with_camera(R"("objects": [{"type": "cube"}])"), "/objects/0/type", "unknown object type"},
-    {"negative_radius", with_camera(R"("objects": [{"type": "sphere", "radius": -1}])"), "/objects/0/radius", "must be > 0"},
-    {"radius_string", with_camera(R"("objects": [{"type": "sphere", "radius": "big"}])"), "/objects/0/radius", "expected a number"},
-    {"zero_up", R"({"camera": {"eye": [0,0,5], "look_at": [0,0,0], "up": [0,0,0]}, "objects": []})", "/camera/up", "non-zero"},
-    {"up_parallel", R"({"camera": {"eye": [0,0,5], "look_at": [0,0,0], "up": [0,0,2]}, "objects": []})", "/camera/up", "parallel"},
-    {"singular", with_camera(R"("objects": [{"type": "sphere", "transform": {"scale": [1, 0, 1]}}])"),
+    {"unknown_object", with_camera(R"("objects": [{"type": "cube"}])"), "/objects/0/type",
+     "unknown object type"},
+    {"negative_radius", with_camera(R"("objects": [{"type": "sphere", "radius": -1}])"),
+     "/objects/0/radius", "must be > 0"},
+    {"radius_string", with_camera(R"("objects": [{"type": "sphere", "radius": "big"}])"),
+     "/objects/0/radius", "expected a number"},
+    {"zero_up", R"({"camera": {"eye": [0,0,5], "look_at": [0,0,0], "up": [0,0,0]}, "objects": []})",
+     "/camera/up", "non-zero"},
+    {"up_parallel",
+     R"({"camera": {"eye": [0,0,5], "look_at": [0,0,0], "up": [0,0,2]}, "objects": []})",
+     "/camera/up", "parallel"},
+    {"singular",
+     with_camera(R"("objects": [{"type": "sphere", "transform": {"scale": [1, 0, 1]}}])"),
      "/objects/0/transform", "singular"},
     {"huge_number", with_camera(R"("objects": [{"type": "sphere", "center": [1e999, 0, 0]}])"),
      "line 1, column", "number overflow"},
-    {"float_overflow", with_camera(R"("objects": [{"type": "sphere", "radius": 1e300}])"), "/objects/0/radius", "too large"},
+    {"float_overflow", with_camera(R"("objects": [{"type": "sphere", "radius": 1e300}])"),
+     "/objects/0/radius", "too large"},
     {"unknown_material", with_camera(R"("objects": [{"type": "sphere", "material": "gold"}])"),
      "/objects/0/material", "unknown material \"gold\""},
-    {"missing_objects", R"({"camera": {"eye": [0,0,5], "look_at": [0,0,0]}})", "(top level)", "missing required key \"objects\""},
-    {"short_vector", with_camera(R"("objects": [{"type": "sphere", "center": [1, 2]}])"), "/objects/0/center", "expected 3 elements"},
-    {"missing_mesh", with_camera(R"("objects": [{"type": "mesh", "file": "nope.obj"}])"), "/objects/0/file", "cannot open mesh"},
-    {"bad_resolution", with_camera(R"("resolution": [0, 10], "objects": [])"), "/resolution/0", "between 1 and"},
-    {"reflectivity_range", with_camera(R"("materials": {"m": {"reflectivity": 1.5}}, "objects": [])"),
+    {"missing_objects", R"({"camera": {"eye": [0,0,5], "look_at": [0,0,0]}})", "(top level)",
+     "missing required key \"objects\""},
+    {"short_vector", with_camera(R"("objects": [{"type": "sphere", "center": [1, 2]}])"),
+     "/objects/0/center", "expected 3 elements"},
+    {"missing_mesh", with_camera(R"("objects": [{"type": "mesh", "file": "nope.obj"}])"),
+     "/objects/0/file", "cannot open mesh"},
+    {"bad_resolution", with_camera(R"("resolution": [0, 10], "objects": [])"), "/resolution/0",
+     "between 1 and"},
+    {"reflectivity_range",
+     with_camera(R"("materials": {"m": {"reflectivity": 1.5}}, "objects": [])"),
      "/materials/m/reflectivity", "between 0 and 1"},
-    {"collinear_triangle", with_camera(R"("objects": [{"type": "triangle", "vertices": [[0,0,0],[1,1,1],[2,2,2]]}])"),
+    {"collinear_triangle",
+     with_camera(R"("objects": [{"type": "triangle", "vertices": [[0,0,0],[1,1,1],[2,2,2]]}])"),
      "/objects/0/vertices", "collinear"},
-    {"light_type", with_camera(R"("lights": [{"type": "spot"}], "objects": [])"), "/lights/0/type", "unknown light type"},
+    {"light_type", with_camera(R"("lights": [{"type": "spot"}], "objects": [])"), "/lights/0/type",
+     "unknown light type"},
     {"too_deep", (std::string(200, '[') + std::string(200, ']')), "(document)", "nested"},
     {"not_object", "[1, 2, 3]", "(top level)", "expected an object"},
 };
@@ -122,7 +140,8 @@ TEST(Loader, MissingFileAndUnknownExtension) {
 TEST(Loader, ErrorsInsideAMeshNameTheMeshFile) {
     const auto dir = test::temp_dir("mesh_error");
     test::write_file(dir / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
-    const auto path = test::write_file(dir / "s.json", with_camera(R"("objects": [{"type": "mesh", "file": "bad.obj"}])"));
+    const auto path = test::write_file(
+        dir / "s.json", with_camera(R"("objects": [{"type": "mesh", "file": "bad.obj"}])"));
     try {
         load_scene(path);
         FAIL();

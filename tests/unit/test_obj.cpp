@@ -15,10 +15,12 @@ TEST(Obj, CornellBoxQuadsAreTriangulatedAndMtlIsMapped) {
     const ObjData obj = load_obj(test::source_dir() / "assets/models/cornell_box.obj");
     EXPECT_EQ(obj.mesh.triangles.size(), 36u);  // 18 quads
     ASSERT_EQ(obj.materials.size(), 5u);
-    const auto light = std::find_if(obj.materials.begin(), obj.materials.end(), [](const Material& m) { return m.name == "light"; });
+    const auto light = std::find_if(obj.materials.begin(), obj.materials.end(),
+                                    [](const Material& m) { return m.name == "light"; });
     ASSERT_NE(light, obj.materials.end());
     EXPECT_FLOAT_EQ(light->ka.x, 20.0f);
-    const auto red = std::find_if(obj.materials.begin(), obj.materials.end(), [](const Material& m) { return m.name == "red"; });
+    const auto red = std::find_if(obj.materials.begin(), obj.materials.end(),
+                                  [](const Material& m) { return m.name == "red"; });
     EXPECT_FLOAT_EQ(red->kd.x, 1.0f);
     EXPECT_FLOAT_EQ(red->kd.y, 0.0f);
     for (std::uint32_t m : obj.mesh.materials) EXPECT_LT(m, obj.materials.size());
@@ -28,15 +30,17 @@ TEST(Obj, MissingNormalsAreComputedSmoothButCreased) {
     const auto dir = test::temp_dir("normals");
     // A unit cube, 6 quads, no normals: every corner normal must be its face's normal
     // (90 degree edges are creases), all unit length.
-    const auto path = test::write_file(dir / "cube.obj",
-        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-        "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+    const auto path =
+        test::write_file(dir / "cube.obj",
+                         "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                         "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
     const ObjData obj = load_obj(path);
     ASSERT_EQ(obj.mesh.triangles.size(), 12u);
     ASSERT_EQ(obj.mesh.corner_normals.size(), 36u);
     for (std::uint32_t t = 0; t < 12; ++t) {
         const vec3 face = glm::normalize(obj.mesh.face_normal(t));
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(glm::dot(obj.mesh.corner_normals[3 * t + k], face), 1.0f, 1e-5f);
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(glm::dot(obj.mesh.corner_normals[3 * t + k], face), 1.0f, 1e-5f);
     }
 }
 
@@ -59,7 +63,8 @@ TEST(Obj, BareObjSceneIsFramedAndLit) {
     const Aabb b = s.bounds();
     const glm::mat4 clip = s.camera.projection(1e4f) * s.camera.view();
     for (int corner = 0; corner < 8; ++corner) {
-        const vec3 p{(corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y, (corner & 4) ? b.hi.z : b.lo.z};
+        const vec3 p{(corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y,
+                     (corner & 4) ? b.hi.z : b.lo.z};
         const glm::vec4 c = clip * glm::vec4(p, 1.0f);
         EXPECT_LT(std::fabs(c.x / c.w), 1.0f) << corner;
         EXPECT_LT(std::fabs(c.y / c.w), 1.0f) << corner;
@@ -79,23 +84,27 @@ void expect_obj_error(const std::string& name, const std::string& text, const st
 
 TEST(Obj, BadFilesGiveLocatedErrors) {
     expect_obj_error("out_of_range", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "out of range");
-    expect_obj_error("negative_out_of_range", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -7\n", "out of range");
+    expect_obj_error("negative_out_of_range", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -7\n",
+                     "out of range");
     expect_obj_error("nan", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "\"nan\" is not a finite");
-    expect_obj_error("inf", "v 0 0 0\nv 1 0 0\nv 0 1e999 0\nf 1 2 3\n", "\"1e999\" is not a finite");
+    expect_obj_error("inf", "v 0 0 0\nv 1 0 0\nv 0 1e999 0\nf 1 2 3\n",
+                     "\"1e999\" is not a finite");
     expect_obj_error("zero_index", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "");
     expect_obj_error("only_points", "v 0 0 0\nv 1 0 0\np 1 2\n", "no triangles");
     expect_obj_error("empty", "", "no triangles");
 }
 
 TEST(Obj, RelativeIndicesWork) {
-    const auto path = test::write_file(test::temp_dir("relative") / "r.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n");
+    const auto path = test::write_file(test::temp_dir("relative") / "r.obj",
+                                       "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n");
     const ObjData obj = load_obj(path);
     ASSERT_EQ(obj.mesh.triangles.size(), 1u);
     EXPECT_EQ(obj.mesh.triangles[0], glm::uvec3(0, 1, 2));
 }
 
 TEST(Obj, MissingMtlIsAWarningNotAnError) {
-    const auto path = test::write_file(test::temp_dir("nomtl") / "m.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const auto path = test::write_file(test::temp_dir("nomtl") / "m.obj",
+                                       "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     const ObjData obj = load_obj(path);
     EXPECT_EQ(obj.mesh.triangles.size(), 1u);
     EXPECT_FALSE(obj.warnings.empty());

@@ -27,7 +27,8 @@ TEST(Render, SameBytesWhateverTheThreadCount) {
         options.tile_size = threads == 3 ? 7 : 16;  // tile shape must not matter either
         const Image many = render(scene, options);
         ASSERT_EQ(one.pixels.size(), many.pixels.size());
-        EXPECT_EQ(0, std::memcmp(one.pixels.data(), many.pixels.data(), one.pixels.size() * sizeof(vec3)))
+        EXPECT_EQ(
+            0, std::memcmp(one.pixels.data(), many.pixels.data(), one.pixels.size() * sizeof(vec3)))
             << threads << " threads";
     }
 }
@@ -57,10 +58,13 @@ TEST(Render, CancellationStopsTheWorkers) {
     options.tile_size = 8;
     RenderStats stats;
     int done_when_stopped = 0;
-    render(scene, options, &stats, [&](int done, int) {
-        if (done == 3) stop.request_stop();
-        done_when_stopped = done;
-    }, stop.get_token());
+    render(
+        scene, options, &stats,
+        [&](int done, int) {
+            if (done == 3) stop.request_stop();
+            done_when_stopped = done;
+        },
+        stop.get_token());
     EXPECT_TRUE(stats.cancelled);
     EXPECT_LT(done_when_stopped, 3 + 2);  // each worker finishes at most its current tile
     EXPECT_LT(stats.rays.primary, 320u * 240u / 10u);
@@ -70,7 +74,8 @@ TEST(Render, CancellationStopsTheWorkers) {
 // flat or black image.
 TEST(Render, EveryAssetSceneGivesASanePicture) {
     int scenes = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(test::source_dir() / "assets/scenes")) {
+    for (const auto& entry :
+         std::filesystem::directory_iterator(test::source_dir() / "assets/scenes")) {
         if (entry.path().extension() != ".json") continue;
         ++scenes;
         const Scene scene = load_small(entry.path().filename().string(), 64, 48);

@@ -19,7 +19,8 @@ void expect_colour(const vec3& got, const vec3& want, float tol = 1e-5f) {
 
 vec3 centre_pixel(const Scene& scene, const TraceOptions& options = {}) {
     RayCounts counts;
-    return Tracer(scene, options).trace_primary(scene.camera.ray(scene.camera.cols / 2, scene.camera.rows / 2), counts);
+    return Tracer(scene, options)
+        .trace_primary(scene.camera.ray(scene.camera.cols / 2, scene.camera.rows / 2), counts);
 }
 
 TEST(Reflect, MirrorDirectionByHand) {
@@ -59,11 +60,13 @@ TEST(Phong, LitSphereCentreEqualsHandValue) {
     Scene scene;
     scene.camera = test::axis_camera({0, 0, 5});
     scene.ambient = vec3(0.2f, 0.3f, 0.4f);
-    scene.materials.push_back(test::plain({0.5f, 0.4f, 0.3f}, {0.6f, 0.2f, 0.1f}, vec3(0.25f), 20.0f));
+    scene.materials.push_back(
+        test::plain({0.5f, 0.4f, 0.3f}, {0.6f, 0.2f, 0.1f}, vec3(0.25f), 20.0f));
     scene.lights.push_back(Light{Light::Type::kPoint, {0, 0, 5}, {}, {0.9f, 0.8f, 0.7f}});
     scene.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
     scene.build();
-    const vec3 expected = vec3(0.5f, 0.4f, 0.3f) * scene.ambient + (vec3(0.6f, 0.2f, 0.1f) + vec3(0.25f)) * vec3(0.9f, 0.8f, 0.7f);
+    const vec3 expected = vec3(0.5f, 0.4f, 0.3f) * scene.ambient +
+                          (vec3(0.6f, 0.2f, 0.1f) + vec3(0.25f)) * vec3(0.9f, 0.8f, 0.7f);
     expect_colour(centre_pixel(scene), expected);
 }
 
@@ -73,7 +76,8 @@ TEST(Phong, DiffuseFollowsTheCosineOfTheLight) {
     scene.camera = test::axis_camera({0, 0, 5});
     scene.ambient = vec3(0.0f);
     scene.materials.push_back(test::plain(vec3(0.0f), vec3(0.8f)));
-    scene.lights.push_back(Light{Light::Type::kDirectional, {}, glm::normalize(vec3(-std::sqrt(3.0f), 0, -1)), vec3(1.0f)});
+    scene.lights.push_back(Light{
+        Light::Type::kDirectional, {}, glm::normalize(vec3(-std::sqrt(3.0f), 0, -1)), vec3(1.0f)});
     scene.objects.push_back(Object{"wall", Plane{{0, 0, 1}, 0}, 0, {}});
     scene.build();
     expect_colour(centre_pixel(scene), vec3(0.4f));

@@ -78,7 +78,8 @@ TEST(Triangle, EachEdgeTestRejectsItsSide) {
     const vec3 a{0, 0, 0}, b{4, 0, 0}, c{0, 4, 0};
     EXPECT_FALSE(intersect_triangle(a, b, c, Ray{{1, -1, 5}, {0, 0, -1}}, kInfinity));  // below AB
     EXPECT_FALSE(intersect_triangle(a, b, c, Ray{{3, 3, 5}, {0, 0, -1}}, kInfinity));   // past BC
-    EXPECT_FALSE(intersect_triangle(a, b, c, Ray{{-1, 1, 5}, {0, 0, -1}}, kInfinity));  // left of CA
+    EXPECT_FALSE(
+        intersect_triangle(a, b, c, Ray{{-1, 1, 5}, {0, 0, -1}}, kInfinity));  // left of CA
 }
 
 TEST(Triangle, BothWindingsAndBothSidesHit) {
@@ -88,14 +89,17 @@ TEST(Triangle, BothWindingsAndBothSidesHit) {
 }
 
 TEST(Triangle, EdgePointCountsAsInside) {
-    const auto h = intersect_triangle({0, 0, 0}, {4, 0, 0}, {0, 4, 0}, Ray{{2, 0, 1}, {0, 0, -1}}, kInfinity);
+    const auto h =
+        intersect_triangle({0, 0, 0}, {4, 0, 0}, {0, 4, 0}, Ray{{2, 0, 1}, {0, 0, -1}}, kInfinity);
     ASSERT_TRUE(h);
     EXPECT_FLOAT_EQ(h->b2, 0.0f);
 }
 
 TEST(Triangle, ParallelAndDegenerateMiss) {
-    EXPECT_FALSE(intersect_triangle({0, 0, 0}, {4, 0, 0}, {0, 4, 0}, Ray{{1, 1, 1}, {1, 0, 0}}, kInfinity));
-    EXPECT_FALSE(intersect_triangle({0, 0, 0}, {1, 1, 0}, {2, 2, 0}, Ray{{1, 1, 1}, {0, 0, -1}}, kInfinity));
+    EXPECT_FALSE(
+        intersect_triangle({0, 0, 0}, {4, 0, 0}, {0, 4, 0}, Ray{{1, 1, 1}, {1, 0, 0}}, kInfinity));
+    EXPECT_FALSE(
+        intersect_triangle({0, 0, 0}, {1, 1, 0}, {2, 2, 0}, Ray{{1, 1, 1}, {0, 0, -1}}, kInfinity));
 }
 
 TEST(TangentFrame, OrthonormalForManyNormals) {

@@ -38,7 +38,8 @@ TEST(Transform, EllipsoidNormalsMatchTheAnalyticNormal) {
 
 TEST(Transform, TStaysTheSameUnderScaleAndTranslation) {
     // Sphere scaled by 2 and moved to z = -10: a ray from the origin meets it at z = -8.
-    const glm::mat4 m = glm::translate(glm::mat4(1.0f), vec3(0, 0, -10)) * glm::scale(glm::mat4(1.0f), vec3(2.0f));
+    const glm::mat4 m =
+        glm::translate(glm::mat4(1.0f), vec3(0, 0, -10)) * glm::scale(glm::mat4(1.0f), vec3(2.0f));
     const Scene scene = one_object(Sphere{}, m);
     Hit hit;
     ASSERT_TRUE(scene.intersect(Ray{{0, 0, 0}, {0, 0, -1}}, hit));
@@ -61,7 +62,8 @@ TEST(Transform, TranslationLeavesNormalsAlone) {
 
 TEST(Transform, RotationTurnsTheNormal) {
     // A y-up plane turned 90 degrees about z faces -x.
-    const Scene scene = one_object(Plane{{0, 1, 0}, 0}, glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), vec3(0, 0, 1)));
+    const Scene scene = one_object(
+        Plane{{0, 1, 0}, 0}, glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), vec3(0, 0, 1)));
     const Ray ray{{-4, 0.3f, 0.2f}, {1, 0, 0}};
     Hit hit;
     ASSERT_TRUE(scene.intersect(ray, hit));
@@ -75,7 +77,8 @@ TEST(Transform, SingularAndProjectiveMatricesAreRefused) {
     glm::mat4 projective(1.0f);
     projective[2][3] = -1.0f;
     EXPECT_FALSE(Transform::from_matrix(projective));
-    EXPECT_TRUE(Transform::from_matrix(glm::scale(glm::mat4(1.0f), vec3(1e-4f))));  // tiny, not singular
+    EXPECT_TRUE(
+        Transform::from_matrix(glm::scale(glm::mat4(1.0f), vec3(1e-4f))));  // tiny, not singular
 }
 
 }  // namespace

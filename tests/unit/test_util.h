@@ -11,7 +11,9 @@
 namespace rt::test {
 
 inline std::filesystem::path source_dir() { return RTVIEW_SOURCE_DIR; }
-inline std::filesystem::path scene_path(const std::string& name) { return source_dir() / "assets/scenes" / name; }
+inline std::filesystem::path scene_path(const std::string& name) {
+    return source_dir() / "assets/scenes" / name;
+}
 
 // A fresh, empty temporary directory per test.
 inline std::filesystem::path temp_dir(const std::string& name) {
@@ -21,7 +23,8 @@ inline std::filesystem::path temp_dir(const std::string& name) {
     return dir;
 }
 
-inline std::filesystem::path write_file(const std::filesystem::path& path, const std::string& text) {
+inline std::filesystem::path write_file(const std::filesystem::path& path,
+                                        const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
     return path;
 }

@@ -1,0 +1,52 @@
+#include "app/gl/compositor.h"
+
+#include <algorithm>
+
+#include "app/gl/debug.h"
+#include "core/compare.h"
+
+namespace rt::gl {
+
+Compositor::Compositor(const std::filesystem::path& shaders)
+    : program_(shaders / "fullscreen.vert", shaders / "present.frag") {
+    glGenVertexArrays(1, &vao_);  // the full-screen triangle comes from gl_VertexID
+    std::vector<vec3> heat(256);
+    for (std::size_t i = 0; i < heat.size(); ++i)
+        heat[i] = heat_colour(static_cast<float>(i) / 255.0f);
+    heat_map_.upload_row(heat);
+    set_item_palette(1);
+}
+
+Compositor::~Compositor() { glDeleteVertexArrays(1, &vao_); }
+
+void Compositor::set_item_palette(std::size_t object_count) {
+    std::vector<vec3> colours(std::clamp<std::size_t>(object_count + 1, 2, 16384));
+    for (std::size_t i = 0; i < colours.size(); ++i)
+        colours[i] = item_colour(static_cast<std::uint32_t>(i));
+    palette_.upload_row(colours);
+}
+
+void Compositor::draw(const CompositeInputs& in, int width, int height) {
+    program_.use();
+    const GLuint textures[] = {in.raster, in.traced, in.item_buffer, heat_map_.id(), palette_.id()};
+    const char* names[] = {"u_raster", "u_traced", "u_ids", "u_heat", "u_palette"};
+    for (int i = 0; i < 5; ++i) {
+        glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(i));
+        glBindTexture(GL_TEXTURE_2D, textures[i]);
+        program_.set(names[i], i);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    program_.set("u_view", static_cast<int>(in.view));
+    program_.set("u_viewport",
+                 glm::vec3(static_cast<float>(width), static_cast<float>(height), 0.0f));
+    program_.set("u_divider", in.divider);
+    program_.set("u_swap", in.swap ? 1 : 0);
+    program_.set("u_diff_scale", std::max(in.diff_scale, 1e-4f));
+    program_.set("u_palette_size", palette_.width());
+    glDisable(GL_DEPTH_TEST);
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    check("Compositor::draw");
+}
+
+}  // namespace rt::gl

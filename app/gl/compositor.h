@@ -1,0 +1,40 @@
+#pragma once
+// Puts a view on the screen: the raster image, the traced image, the two split at a
+// divider, their difference in false colour, or the item buffer; encoded to sRGB
+// by the same transfer function as the files.
+
+#include "app/gl/program.h"
+#include "app/gl/texture.h"
+
+namespace rt::gl {
+
+enum class View { kRaster, kTrace, kSplit, kDiff, kItemBuffer };
+
+struct CompositeInputs {
+    GLuint raster = 0;       // RGBA32F, linear
+    GLuint traced = 0;       // RGB32F, linear, any resolution (coarse while moving)
+    GLuint item_buffer = 0;  // R32UI object ids
+    View view = View::kSplit;
+    float divider = 0.5f;     // split: the divider's x as a share of the width
+    bool swap = false;        // split: traced on the left
+    float diff_scale = 0.5f;  // diff: the difference shown at the top of the colour map
+};
+
+class Compositor {
+  public:
+    explicit Compositor(const std::filesystem::path& shaders = shader_dir());
+    ~Compositor();
+
+    // Draws into the bound framebuffer over the viewport (x, y, width, height).
+    void draw(const CompositeInputs& in, int width, int height);
+    // The palette of item-buffer ids, from core's item_colour(), for `object_count` objects.
+    void set_item_palette(std::size_t object_count);
+
+  private:
+    Program program_;
+    Texture heat_map_;
+    Texture palette_;
+    GLuint vao_ = 0;
+};
+
+}  // namespace rt::gl

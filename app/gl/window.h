@@ -1,0 +1,40 @@
+#pragma once
+// A GLFW window with an OpenGL 3.3 core context, loaded through the same glad loader as
+// the headless contexts (fed by glfwGetProcAddress), plus Dear ImGui on top of it.
+
+#include <string>
+
+#include <glm/vec2.hpp>
+
+struct GLFWwindow;
+
+namespace rt::gl {
+
+class Window {
+  public:
+    // Throws rt::Error("rtview", "display", ...) when there is no display or no context.
+    Window(int width, int height, const std::string& title);
+    ~Window();
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    GLFWwindow* handle() const { return window_; }
+    const std::string& description() const { return description_; }
+    glm::ivec2 framebuffer_size() const;
+    void set_title(const std::string& title);
+    bool should_close() const;
+
+    // Dear ImGui frames; install after the application's own GLFW callbacks, which
+    // ImGui's back-end then chains to.
+    void init_imgui();
+    void begin_imgui_frame();
+    void end_imgui_frame();  // renders ImGui's draw data
+    void swap_buffers();
+
+  private:
+    GLFWwindow* window_ = nullptr;
+    std::string description_;
+    bool imgui_ = false;
+};
+
+}  // namespace rt::gl

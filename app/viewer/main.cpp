@@ -1,0 +1,66 @@
+// rtview: the interactive viewer.
+//   rtview [SCENE] [--size WxH] [--view raster|trace|split|diff|itembuffer] [--save-dir DIR]
+
+#include <charconv>
+#include <iostream>
+#include <map>
+
+#include <CLI/CLI.hpp>
+
+#include "app/viewer/viewer.h"
+#include "core/error.h"
+
+namespace {
+
+bool parse_size(const std::string& text, int& w, int& h) {
+    const char* end = text.data() + text.size();
+    const auto [x_at, ec1] = std::from_chars(text.data(), end, w);
+    if (ec1 != std::errc{} || x_at == end || (*x_at != 'x' && *x_at != 'X')) return false;
+    const auto [h_end, ec2] = std::from_chars(x_at + 1, end, h);
+    return ec2 == std::errc{} && h_end == end && w >= 64 && h >= 64 && w <= 16384 && h <= 16384;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    rtview::ViewerOptions options;
+    options.scene = std::string(RTVIEW_ASSET_DIR) + "/scenes/whitted.json";
+    std::string size, view = "split", save_dir = ".";
+    CLI::App app{"rtview: one scene, rasterised by OpenGL and ray traced, side by side"};
+    app.add_option("scene", options.scene,
+                   "Scene file (.json or .obj); default: the Whitted scene");
+    app.add_option("--size", size, "Window size WxH (default 1280x720)");
+    app.add_option("--view", view, "First view")
+        ->check(CLI::IsMember({"raster", "trace", "split", "diff", "itembuffer"}));
+    app.add_option("--save-dir", save_dir, "Where F12 saves images (default: here)");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "rtview: command line: " << e.what() << " (see rtview --help)\n";
+        return 1;
+    }
+    if (!size.empty() && !parse_size(size, options.width, options.height)) {
+        std::cerr << "rtview: --size: expected WxH between 64x64 and 16384x16384, got \"" << size
+                  << "\"\n";
+        return 1;
+    }
+    const std::map<std::string, rt::gl::View> views = {{"raster", rt::gl::View::kRaster},
+                                                       {"trace", rt::gl::View::kTrace},
+                                                       {"split", rt::gl::View::kSplit},
+                                                       {"diff", rt::gl::View::kDiff},
+                                                       {"itembuffer", rt::gl::View::kItemBuffer}};
+    options.view = views.at(view);
+    options.save_dir = save_dir;
+    try {
+        rtview::Viewer viewer(options);
+        return viewer.run();
+    } catch (const rt::Error& e) {
+        std::cerr << e.what() << '\n';
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "rtview: error: " << e.what() << '\n';
+        return 1;
+    }
+}

@@ -1,0 +1,100 @@
+#include "app/viewer/trace_job.h"
+
+#include <algorithm>
+
+#include "core/compare.h"
+
+namespace rtview {
+
+TraceJob::TraceJob() : thread_([this](std::stop_token stop) { loop(stop); }) {}
+
+TraceJob::~TraceJob() {
+    thread_.request_stop();
+    {
+        std::lock_guard lock(mutex_);
+        running_.request_stop();
+    }
+    wake_.notify_all();
+}  // the jthread joins here
+
+void TraceJob::submit(TraceRequest request) {
+    {
+        std::lock_guard lock(mutex_);
+        pending_ = std::move(request);
+        running_.request_stop();
+    }
+    wake_.notify_all();
+}
+
+void TraceJob::cancel() {
+    std::unique_lock lock(mutex_);
+    pending_.reset();
+    running_.request_stop();
+    idle_.wait(lock, [&] { return !busy_.load(); });
+}
+
+std::optional<TraceResult> TraceJob::take() {
+    std::lock_guard lock(mutex_);
+    std::optional<TraceResult> out = std::move(result_);
+    result_.reset();
+    return out;
+}
+
+void TraceJob::loop(std::stop_token stop) {
+    for (;;) {
+        TraceRequest request;
+        std::stop_token cancel;
+        {
+            std::unique_lock lock(mutex_);
+            if (!wake_.wait(lock, stop, [&] { return pending_.has_value(); })) return;
+            request = std::move(*pending_);
+            pending_.reset();
+            running_ = std::stop_source();
+            cancel = running_.get_token();
+            busy_ = true;
+        }
+        run(request, cancel);
+        request.scene.reset();  // let go of the scene before saying we are idle
+        request.item_buffer.reset();
+        {
+            std::lock_guard lock(mutex_);
+            busy_ = false;
+        }
+        idle_.notify_all();
+    }
+}
+
+void TraceJob::run(const TraceRequest& request, std::stop_token cancel) {
+    const rt::Camera& full = request.camera;
+    for (int level : request.levels) {
+        const rt::Camera camera =
+            full.resized(std::max(1, full.cols / level), std::max(1, full.rows / level));
+        const bool use_ib = level == 1 && request.item_buffer &&
+                            request.item_buffer->width == camera.cols &&
+                            request.item_buffer->height == camera.rows;
+        TraceResult result;
+        result.id = request.id;
+        result.level = level;
+        progress_ = 0.0f;
+        const auto on_progress = [&](int done, int total) {
+            progress_ = static_cast<float>(done) / static_cast<float>(total);
+        };
+        result.image =
+            rt::render(*request.scene, camera, request.options, &result.stats, on_progress, cancel,
+                       use_ib ? request.item_buffer.get() : nullptr);
+        if (result.stats.cancelled) return;
+        if (use_ib) {
+            rt::RenderStats plain_stats;
+            const rt::Image plain =
+                rt::render(*request.scene, camera, request.options, &plain_stats, {}, cancel);
+            if (plain_stats.cancelled) return;
+            result.without_item_buffer = plain_stats;
+            result.item_buffer_disagreements =
+                rt::compare_images(result.image, plain, 1.5 / 255.0).pixels_over;
+        }
+        std::lock_guard lock(mutex_);
+        result_ = std::move(result);
+    }
+}
+
+}  // namespace rtview

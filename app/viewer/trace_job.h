@@ -1,0 +1,70 @@
+#pragma once
+// Ray tracing on a worker thread for the viewer, progressively: each request is a chain
+// of levels (8 = one traced pixel per 8 x 8 screen pixels, ..., 1 = full resolution),
+// each published as soon as it is done. A new request cancels the running one at its
+// next tile, so the window never waits for the tracer.
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "core/item_buffer.h"
+#include "core/renderer.h"
+#include "core/scene.h"
+
+namespace rtview {
+
+struct TraceRequest {
+    std::shared_ptr<const rt::Scene> scene;  // kept alive until the worker is done with it
+    rt::Camera camera;                       // at the full trace resolution
+    rt::RenderOptions options;
+    std::vector<int> levels{8, 4, 2, 1};
+    // For the full-resolution level: primary hits from the raster item buffer, and then
+    // the same frame again without it, to measure what it saved and where it differs.
+    std::shared_ptr<const rt::ItemBuffer> item_buffer;
+    std::uint64_t id = 0;
+};
+
+struct TraceResult {
+    std::uint64_t id = 0;
+    int level = 1;
+    rt::Image image;
+    rt::RenderStats stats;
+    std::optional<rt::RenderStats> without_item_buffer;  // with an item buffer only
+    std::uint64_t item_buffer_disagreements = 0;
+};
+
+class TraceJob {
+  public:
+    TraceJob();
+    ~TraceJob();
+
+    void submit(TraceRequest request);
+    // Stops the running request and waits until the worker holds no scene.
+    void cancel();
+    // The newest result not yet taken.
+    std::optional<TraceResult> take();
+    float progress() const { return progress_.load(); }  // of the running level
+    bool busy() const { return busy_.load(); }
+
+  private:
+    void loop(std::stop_token stop);
+    void run(const TraceRequest& request, std::stop_token cancel);
+
+    std::mutex mutex_;
+    std::condition_variable_any wake_;
+    std::condition_variable_any idle_;
+    std::optional<TraceRequest> pending_;
+    std::stop_source running_;
+    std::optional<TraceResult> result_;
+    std::atomic<float> progress_{0.0f};
+    std::atomic<bool> busy_{false};
+    std::jthread thread_;  // last: starts after the members it uses
+};
+
+}  // namespace rtview

@@ -1,0 +1,372 @@
+#include "app/viewer/viewer.h"
+
+#include <cstdio>
+#include <iostream>
+
+#include "app/gl/gl.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "app/gl/debug.h"
+#include "core/error.h"
+#include "core/scene_loader.h"
+
+namespace rtview {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+Viewer* viewer_of(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
+
+const char* view_name(View v) {
+    switch (v) {
+        case View::kRaster:
+            return "raster";
+        case View::kTrace:
+            return "traced";
+        case View::kSplit:
+            return "split";
+        case View::kDiff:
+            return "difference";
+        case View::kItemBuffer:
+            return "item buffer";
+    }
+    return "?";
+}
+
+constexpr double kRestSeconds = 0.2;  // the camera rests this long before full refinement
+
+}  // namespace
+
+namespace {
+
+// The part of loading that needs no GL: parse and build. Throws rt::Error.
+std::shared_ptr<rt::Scene> read_scene(const std::string& path) {
+    rt::LoadedScene loaded = rt::load_scene(path);
+    for (const std::string& w : loaded.warnings) std::cerr << w << '\n';
+    auto scene = std::make_shared<rt::Scene>(std::move(loaded.scene));
+    scene->build();
+    return scene;
+}
+
+}  // namespace
+
+Viewer::Viewer(const ViewerOptions& options)
+    : options_(options),
+      first_scene_(read_scene(options.scene)),  // a bad file fails before any window opens
+      window_(options.width, options.height, "rtview"),
+      view_(options.view) {
+    GLFWwindow* w = window_.handle();
+    glfwSetWindowUserPointer(w, this);
+    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
+        viewer_of(win)->on_key(key, action, mods);
+    });
+    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
+        viewer_of(win)->on_mouse_button(button, action);
+    });
+    glfwSetCursorPosCallback(
+        w, [](GLFWwindow* win, double x, double y) { viewer_of(win)->on_cursor(x, y); });
+    glfwSetScrollCallback(
+        w, [](GLFWwindow* win, double, double dy) { viewer_of(win)->on_scroll(dy); });
+    glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
+        if (count > 0) viewer_of(win)->on_drop(paths[0]);
+    });
+    window_.init_imgui();  // after ours: ImGui's callbacks chain to them
+    compositor_ = std::make_unique<rt::gl::Compositor>();
+    std::printf("OpenGL: %s\n", window_.description().c_str());
+    install(std::move(first_scene_), options.scene);
+}
+
+Viewer::~Viewer() { tracer_.cancel(); }
+
+bool Viewer::load(const std::string& path) {
+    try {
+        install(read_scene(path), path);
+        return true;
+    } catch (const std::exception& e) {
+        error_ = e.what();
+        std::fprintf(stderr, "%s\n", error_.c_str());
+        return false;
+    }
+}
+
+void Viewer::install(std::shared_ptr<rt::Scene> scene, const std::string& path) {
+    auto raster = std::make_unique<rt::gl::RasterRenderer>(*scene);
+    tracer_.cancel();  // the worker lets go of the old scene before it goes
+    raster_ = std::move(raster);
+    scene_ = std::move(scene);
+    scene_path_ = path;
+    controller_ = std::make_unique<CameraController>(scene_->camera, scene_->bounds());
+    compositor_->set_item_palette(scene_->objects.size());
+    submitted_camera_ = ~0ull;
+    traced_image_ = rt::Image(1, 1);
+    traced_image_.pixels[0] = scene_->background;
+    traced_texture_.upload(traced_image_);
+    stats_ = FrameStats{};
+    error_.clear();
+    std::printf("scene: %s (%zu objects, %zu triangles)\n", path.c_str(), scene_->objects.size(),
+                scene_->triangle_count());
+    std::fflush(stdout);
+}
+
+rt::Camera Viewer::trace_camera() const {
+    const glm::ivec2 fb = window_.framebuffer_size();
+    const auto scaled = [&](int n) {
+        return std::max(1, static_cast<int>(static_cast<float>(n) * settings_.resolution_scale));
+    };
+    return controller_->camera(scaled(fb.x), scaled(fb.y));
+}
+
+// Any change of camera, settings or size restarts the tracer at a coarse level at once;
+// once the camera has rested, the chain up to full resolution follows.
+void Viewer::update_trace(Clock::time_point now) {
+    const glm::ivec2 fb = window_.framebuffer_size();
+    const bool changed = controller_->version() != submitted_camera_ ||
+                         !(settings_ == submitted_settings_) || fb != submitted_size_;
+    TraceRequest request;
+    request.scene = scene_;
+    request.camera = trace_camera();
+    request.options.threads = settings_.threads;
+    request.options.trace.shadows = settings_.shadows;
+    request.options.trace.reflections = settings_.reflections;
+    request.options.trace.refractions = settings_.refractions;
+    request.options.trace.max_depth = settings_.max_depth;
+    if (changed) {
+        const bool first = submitted_camera_ == ~0ull;
+        submitted_camera_ = controller_->version();
+        submitted_settings_ = settings_;
+        submitted_size_ = fb;
+        last_change_ = now;
+        request.levels = first ? std::vector<int>{8, 4, 2, 1} : std::vector<int>{8};
+        refine_pending_ = !first;
+        if (!first) {
+            request.id = ++request_id_;
+            tracer_.submit(std::move(request));
+            return;
+        }
+    } else if (!refine_pending_ ||
+               std::chrono::duration<double>(now - last_change_).count() < kRestSeconds) {
+        return;
+    } else {
+        refine_pending_ = false;
+        request.levels = {4, 2, 1};
+    }
+    if (settings_.item_buffer) {
+        const auto start = Clock::now();
+        request.item_buffer =
+            std::make_shared<rt::ItemBuffer>(raster_->render_item_buffer(request.camera));
+        stats_.item_buffer_ms = 1e3 * std::chrono::duration<double>(Clock::now() - start).count();
+    }
+    request.id = ++request_id_;
+    tracer_.submit(std::move(request));
+}
+
+void Viewer::collect_trace() {
+    std::optional<TraceResult> result = tracer_.take();
+    if (!result || result->id != request_id_) return;
+    traced_image_ = std::move(result->image);
+    traced_texture_.upload(traced_image_);
+    stats_.level = result->level;
+    if (result->level == 1) {
+        std::printf("traced: %dx%d in %.3f s (primary %.3f s, secondary %.3f s), %.2f Mrays/s\n",
+                    traced_image_.width, traced_image_.height, result->stats.seconds,
+                    result->stats.primary_seconds, result->stats.secondary_seconds,
+                    result->stats.mrays_per_s());
+        if (const auto& plain = result->without_item_buffer)
+            std::printf(
+                "item buffer: pass %.3f s, primary %.3f s instead of %.3f s, %llu of %zu pixels "
+                "disagree\n",
+                stats_.item_buffer_ms * 1e-3, result->stats.primary_seconds, plain->primary_seconds,
+                static_cast<unsigned long long>(result->item_buffer_disagreements),
+                traced_image_.pixels.size());
+        std::fflush(stdout);
+        stats_.full = std::move(result);
+    }
+    update_title();
+}
+
+View Viewer::shown_view() const {
+    if (!flicker_) return view_;
+    // Holding Tab alternates raster and traced four times a second.
+    const auto phase = static_cast<long long>(glfwGetTime() * 4.0);
+    return phase % 2 == 0 ? View::kRaster : View::kTrace;
+}
+
+void Viewer::draw_views(int width, int height) {
+    const rt::Camera camera = controller_->camera(width, height);
+    rt::gl::CompositeInputs in;
+    in.view = shown_view();
+    in.divider = divider_;
+    in.swap = swap_;
+    in.diff_scale = settings_.diff_scale;
+    in.traced = traced_texture_.id();
+    if (in.view != View::kTrace && in.view != View::kItemBuffer) {
+        const auto start = Clock::now();
+        in.raster = raster_->render_to_texture(camera).texture();
+        glFinish();  // so that the time is the GPU's too
+        stats_.raster_ms = 1e3 * std::chrono::duration<double>(Clock::now() - start).count();
+    }
+    if (in.view == View::kItemBuffer)
+        in.item_buffer = raster_->render_item_buffer_to_texture(camera).texture();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    compositor_->draw(in, width, height);
+}
+
+void Viewer::frame(float dt) {
+    const glm::ivec2 fb = window_.framebuffer_size();
+    if (dropped_) {
+        load(*dropped_);
+        dropped_.reset();
+    }
+    if (!ImGui::GetIO().WantCaptureKeyboard) {
+        GLFWwindow* w = window_.handle();
+        const auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0f : 0.0f; };
+        const rt::vec3 fly{down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
+                           down(GLFW_KEY_W) - down(GLFW_KEY_S)};
+        controller_->fly(fly, dt, down(GLFW_KEY_LEFT_SHIFT) + down(GLFW_KEY_RIGHT_SHIFT) > 0.0f);
+    }
+    update_trace(Clock::now());
+    collect_trace();
+    draw_views(fb.x, fb.y);
+    if (save_requested_) {
+        save_requested_ = false;
+        save_view(fb.x, fb.y);
+    }
+    window_.begin_imgui_frame();
+    if (panel_) {  // H hides the panel and the labels: a clean view
+        draw_panel();
+        draw_overlays(fb.x, fb.y);
+    }
+    if (help_) draw_help();
+    window_.end_imgui_frame();
+    rt::gl::check("Viewer::frame");
+    window_.swap_buffers();
+}
+
+int Viewer::run() {
+    update_title();
+    auto last = Clock::now();
+    while (!window_.should_close()) {
+        const glm::ivec2 fb = window_.framebuffer_size();
+        if (fb.x <= 0 || fb.y <= 0) {  // minimised: nothing to draw, nothing to trace
+            glfwWaitEventsTimeout(0.1);
+            last = Clock::now();
+            continue;
+        }
+        glfwPollEvents();
+        const auto now = Clock::now();
+        frame(std::min(0.1f, std::chrono::duration<float>(now - last).count()));
+        last = now;
+    }
+    return 0;
+}
+
+void Viewer::set_view(View view) {
+    view_ = view;
+    std::printf("view: %s\n", view_name(view));
+    std::fflush(stdout);
+    update_title();
+}
+
+void Viewer::update_title() {
+    std::string title = "rtview - " + std::filesystem::path(scene_path_).filename().string() +
+                        " - " + view_name(view_);
+    title += stats_.level == 1 ? " - traced" : " - tracing";
+    if (title != title_) window_.set_title(title);
+    title_ = title;
+}
+
+void Viewer::on_key(int key, int action, int mods) {
+    if (ImGui::GetIO().WantCaptureKeyboard) return;
+    if (key == GLFW_KEY_TAB && (action == GLFW_PRESS || action == GLFW_RELEASE)) {
+        flicker_ = action == GLFW_PRESS;
+        std::printf("flicker: %s\n", flicker_ ? "on" : "off");
+        std::fflush(stdout);
+    }
+    if (action != GLFW_PRESS) return;
+    switch (key) {
+        case GLFW_KEY_1:
+            set_view(View::kRaster);
+            break;
+        case GLFW_KEY_2:
+            set_view(View::kTrace);
+            break;
+        case GLFW_KEY_3:
+            set_view(View::kSplit);
+            break;
+        case GLFW_KEY_4:
+            set_view(View::kDiff);
+            break;
+        case GLFW_KEY_5:
+            set_view(View::kItemBuffer);
+            break;
+        case GLFW_KEY_X:
+            swap_ = !swap_;
+            std::printf("swap: %s\n", swap_ ? "traced left" : "raster left");
+            std::fflush(stdout);
+            break;
+        case GLFW_KEY_H:
+            panel_ = !panel_;
+            break;
+        case GLFW_KEY_R:
+            controller_->reset();
+            break;
+        case GLFW_KEY_F1:
+            help_ = !help_;
+            break;
+        case GLFW_KEY_SLASH:
+            if (mods & GLFW_MOD_SHIFT) help_ = !help_;
+            break;  // '?'
+        case GLFW_KEY_F12:
+        case GLFW_KEY_P:
+            save_requested_ = true;
+            break;
+        case GLFW_KEY_PAGE_DOWN:
+        case GLFW_KEY_PAGE_UP:
+            cycle_scene(key == GLFW_KEY_PAGE_DOWN ? 1 : -1);
+            break;
+        case GLFW_KEY_ESCAPE:
+            help_ ? void(help_ = false) : glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE);
+            break;
+        default:
+            break;
+    }
+}
+
+void Viewer::on_mouse_button(int button, int action) {
+    if (action == GLFW_RELEASE) {
+        orbiting_ = panning_ = dragging_divider_ = false;
+        return;
+    }
+    if (ImGui::GetIO().WantCaptureMouse) return;
+    int width = 1, height = 1;
+    glfwGetWindowSize(window_.handle(), &width, &height);
+    if (button == GLFW_MOUSE_BUTTON_LEFT) {
+        const bool near_divider = view_ == View::kSplit &&
+                                  std::abs(cursor_.x - static_cast<double>(divider_) * width) < 8.0;
+        (near_divider ? dragging_divider_ : orbiting_) = true;
+    } else {
+        panning_ = true;  // right or middle
+    }
+}
+
+void Viewer::on_cursor(double x, double y) {
+    const glm::dvec2 delta = glm::dvec2(x, y) - cursor_;
+    cursor_ = {x, y};
+    int w = 1, h = 1;
+    glfwGetWindowSize(window_.handle(), &w, &h);
+    if (dragging_divider_)
+        divider_ = std::clamp(static_cast<float>(x / std::max(1, w)), 0.0f, 1.0f);
+    if (orbiting_) controller_->orbit(static_cast<float>(delta.x), static_cast<float>(delta.y));
+    if (panning_) controller_->pan(static_cast<float>(delta.x), static_cast<float>(delta.y), h);
+}
+
+void Viewer::on_scroll(double dy) {
+    if (!ImGui::GetIO().WantCaptureMouse) controller_->zoom(static_cast<float>(dy));
+}
+
+void Viewer::on_drop(const std::string& path) { dropped_ = path; }
+
+}  // namespace rtview

@@ -1,0 +1,118 @@
+#pragma once
+// rtview's window: the raster view drawn live, the traced view refined on a worker
+// thread, split, difference and item-buffer views, one camera for both, a Dear ImGui
+// panel. The window only reads the images the tracer publishes; the tracer never knows
+// about the window.
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/gl/compositor.h"
+#include "app/gl/raster_renderer.h"
+#include "app/gl/texture.h"
+#include "app/gl/window.h"
+#include "app/viewer/camera_controller.h"
+#include "app/viewer/trace_job.h"
+
+namespace rtview {
+
+using rt::gl::View;
+
+struct ViewerOptions {
+    std::string scene;
+    int width = 1280;
+    int height = 720;
+    View view = View::kSplit;
+    std::filesystem::path save_dir = ".";
+};
+
+struct Settings {
+    bool shadows = true, reflections = true, refractions = true;
+    bool item_buffer = false;
+    int max_depth = 5;
+    float resolution_scale = 1.0f;  // of the window, for the traced image
+    int threads = 0;                // 0: all cores
+    float diff_scale = 0.5f;
+
+    bool operator==(const Settings&) const = default;
+};
+
+// What the panel shows: the last frames' costs.
+struct FrameStats {
+    double raster_ms = 0.0;
+    std::optional<TraceResult> full;  // the last full-resolution trace (image moved out)
+    double item_buffer_ms = 0.0;      // raster item-buffer pass with read-back
+    int level = 0;                    // of the traced image on screen
+};
+
+class Viewer {
+  public:
+    explicit Viewer(const ViewerOptions& options);  // throws rt::Error
+    ~Viewer();
+    int run();
+
+    // GLFW input, forwarded by the static callbacks.
+    void on_key(int key, int action, int mods);
+    void on_mouse_button(int button, int action);
+    void on_cursor(double x, double y);
+    void on_scroll(double dy);
+    void on_drop(const std::string& path);
+
+  private:
+    bool load(const std::string& path);  // on failure: false, error_ set, current scene kept
+    void install(std::shared_ptr<rt::Scene> scene,
+                 const std::string& path);  // GL upload, camera, restart
+    void cycle_scene(int step);             // PageDown / PageUp through assets/scenes
+    void frame(float dt);
+    void update_trace(std::chrono::steady_clock::time_point now);
+    void collect_trace();
+    void draw_views(int width, int height);
+    void draw_panel();
+    void draw_overlays(int width, int height);
+    void draw_help();
+    void save_view(int width, int height);
+    void set_view(View view);
+    void update_title();
+    rt::Camera trace_camera() const;
+    View shown_view() const;
+
+    ViewerOptions options_;
+    std::shared_ptr<rt::Scene> first_scene_;  // read before the window opens
+    rt::gl::Window window_;
+    std::unique_ptr<rt::gl::Compositor> compositor_;
+    std::shared_ptr<rt::Scene> scene_;
+    std::string scene_path_;
+    std::unique_ptr<rt::gl::RasterRenderer> raster_;
+    std::unique_ptr<CameraController> controller_;
+    TraceJob tracer_;
+    rt::gl::Texture traced_texture_;
+    rt::Image traced_image_;  // what traced_texture_ holds
+
+    Settings settings_;
+    Settings submitted_settings_;
+    std::uint64_t submitted_camera_ = ~0ull;
+    glm::ivec2 submitted_size_{0, 0};
+    std::uint64_t request_id_ = 0;
+    bool refine_pending_ = false;
+    std::chrono::steady_clock::time_point last_change_;
+    FrameStats stats_;
+
+    View view_ = View::kSplit;
+    float divider_ = 0.5f;
+    bool swap_ = false;
+    bool help_ = false;
+    bool panel_ = true;
+    bool flicker_ = false;
+    bool save_requested_ = false;
+    std::optional<std::string> dropped_;
+    std::string error_;
+    std::string title_;
+
+    bool orbiting_ = false, panning_ = false, dragging_divider_ = false;
+    glm::dvec2 cursor_{0.0, 0.0};
+};
+
+}  // namespace rtview

@@ -1,0 +1,194 @@
+// The Dear ImGui side of the viewer: the panel, the labels over the views, the keys.
+#include <algorithm>
+#include <cstdlib>
+#include <thread>
+
+#include <imgui.h>
+
+#include "app/viewer/viewer.h"
+#include "core/compare.h"
+
+namespace rtview {
+namespace {
+
+std::filesystem::path asset_dir() {
+    if (const char* env = std::getenv("RTVIEW_ASSET_DIR"); env && *env) return env;
+    return RTVIEW_ASSET_DIR;
+}
+
+std::vector<std::filesystem::path> asset_scenes() {
+    std::vector<std::filesystem::path> out;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(asset_dir() / "scenes", ec))
+        if (e.path().extension() == ".json") out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+ImU32 heat_u32(float t) {
+    const rt::vec3 c = rt::heat_colour(t);
+    return ImGui::GetColorU32(
+        ImVec4(rt::srgb_encode(c.x), rt::srgb_encode(c.y), rt::srgb_encode(c.z), 1.0f));
+}
+
+void section(const char* title) {
+    ImGui::Separator();
+    ImGui::TextDisabled("%s", title);
+}
+
+void label(ImDrawList* draw, ImVec2 at, const char* text) {
+    const ImVec2 size = ImGui::CalcTextSize(text);
+    draw->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2),
+                        IM_COL32(0, 0, 0, 170), 4.0f);
+    draw->AddText(at, IM_COL32(255, 255, 255, 255), text);
+}
+
+}  // namespace
+
+void Viewer::cycle_scene(int step) {
+    const auto scenes = asset_scenes();
+    if (scenes.empty()) return;
+    const auto current = std::find(scenes.begin(), scenes.end(),
+                                   std::filesystem::path(dropped_.value_or(scene_path_)));
+    const auto n = static_cast<long>(scenes.size());
+    const long index = current == scenes.end() ? 0 : ((current - scenes.begin()) + step + n) % n;
+    dropped_ = scenes[static_cast<std::size_t>(index)].string();
+}
+
+void Viewer::draw_panel() {
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(310, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin("rtview", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+
+    const std::string current = std::filesystem::path(scene_path_).filename().string();
+    if (ImGui::BeginCombo("scene", current.c_str())) {
+        for (const auto& path : asset_scenes())
+            if (ImGui::Selectable(path.filename().string().c_str(), path.filename() == current))
+                dropped_ = path.string();
+        ImGui::EndCombo();
+    }
+    ImGui::TextDisabled("or drop a .json or .obj on the window");
+    // The ray tracer's settings come first: their place does not move with the view.
+    if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error_.c_str());
+
+    section("ray tracer");
+    ImGui::Checkbox("shadows", &settings_.shadows);
+    ImGui::SameLine();
+    ImGui::Checkbox("reflection", &settings_.reflections);
+    ImGui::SameLine();
+    ImGui::Checkbox("refraction", &settings_.refractions);
+    ImGui::Checkbox("item buffer (primary hits from OpenGL)", &settings_.item_buffer);
+    ImGui::SliderInt("max depth", &settings_.max_depth, 0, 12);
+    ImGui::SliderFloat("resolution", &settings_.resolution_scale, 0.1f, 1.0f, "%.2f x window");
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    int threads = settings_.threads > 0 ? settings_.threads : cores;
+    if (ImGui::SliderInt("threads", &threads, 1, std::max(cores, 16))) settings_.threads = threads;
+
+    section("view");
+    const char* names[] = {"1 raster", "2 traced", "3 split", "4 difference", "5 item buffer"};
+    for (int i = 0; i < 5; ++i) {
+        if (ImGui::RadioButton(names[i], view_ == static_cast<View>(i)))
+            set_view(static_cast<View>(i));
+        if (i % 3 != 2 && i != 4) ImGui::SameLine();
+    }
+    if (view_ == View::kSplit) {
+        ImGui::Checkbox("swap sides (X)", &swap_);
+        ImGui::SliderFloat("divider", &divider_, 0.0f, 1.0f);
+    }
+    if (view_ == View::kDiff) ImGui::SliderFloat("diff scale", &settings_.diff_scale, 0.01f, 1.0f);
+
+    section("statistics");
+    ImGui::Text("raster: %.1f ms", stats_.raster_ms);
+    if (tracer_.busy()) ImGui::ProgressBar(tracer_.progress(), ImVec2(-1, 0), "tracing");
+    ImGui::Text("traced image: 1/%d resolution", std::max(1, stats_.level));
+    if (stats_.full) {
+        const rt::RenderStats& s = stats_.full->stats;
+        ImGui::Text("trace: %.1f ms (primary %.1f, secondary %.1f)", 1e3 * s.seconds,
+                    1e3 * s.primary_seconds, 1e3 * s.secondary_seconds);
+        ImGui::Text("%.2f Mrays/s on %d threads", s.mrays_per_s(), s.threads);
+        if (const auto& plain = stats_.full->without_item_buffer) {
+            const double saved =
+                1e3 * (plain->primary_seconds - s.primary_seconds) - stats_.item_buffer_ms;
+            ImGui::Text("item buffer: pass %.1f ms, primary %.1f -> %.1f ms", stats_.item_buffer_ms,
+                        1e3 * plain->primary_seconds, 1e3 * s.primary_seconds);
+            ImGui::TextColored(
+                saved >= 0 ? ImVec4(0.5f, 1.0f, 0.5f, 1.0f) : ImVec4(1.0f, 0.6f, 0.4f, 1.0f),
+                "net %s %.1f ms", saved >= 0 ? "saving" : "loss", std::abs(saved));
+            const double pixels = static_cast<double>(stats_.full->stats.rays.primary);
+            ImGui::Text("%llu pixels disagree (%.4f%%), %llu fell back",
+                        static_cast<unsigned long long>(stats_.full->item_buffer_disagreements),
+                        100.0 * static_cast<double>(stats_.full->item_buffer_disagreements) /
+                            std::max(1.0, pixels),
+                        static_cast<unsigned long long>(s.item_buffer_fallbacks));
+        }
+    }
+    ImGui::Separator();
+    if (ImGui::Button("reset camera (R)")) controller_->reset();
+    ImGui::SameLine();
+    if (ImGui::Button("save (F12)")) save_requested_ = true;
+    ImGui::SameLine();
+    if (ImGui::Button("keys (F1)")) help_ = !help_;
+    ImGui::End();
+}
+
+void Viewer::draw_overlays(int width, int height) {
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const float scale =
+        static_cast<float>(ImGui::GetIO().DisplaySize.x) / static_cast<float>(std::max(1, width));
+    const float w = static_cast<float>(width) * scale, h = static_cast<float>(height) * scale;
+    const View view = shown_view();
+    if (view == View::kSplit) {
+        const float x = divider_ * w;
+        label(draw, ImVec2(x - 110.0f, h - 30.0f), swap_ ? "ray traced" : "OpenGL");
+        label(draw, ImVec2(x + 12.0f, h - 30.0f), swap_ ? "OpenGL" : "ray traced");
+    } else if (view == View::kDiff) {
+        // The colour map and its scale, down the right-hand side.
+        const float x0 = w - 40.0f, y0 = 40.0f, y1 = h - 40.0f;
+        for (int i = 0; i < 64; ++i) {
+            const float a = y1 - (y1 - y0) * static_cast<float>(i) / 64.0f,
+                        b = y1 - (y1 - y0) * static_cast<float>(i + 1) / 64.0f;
+            draw->AddRectFilled(ImVec2(x0, b), ImVec2(x0 + 16.0f, a),
+                                heat_u32((static_cast<float>(i) + 0.5f) / 64.0f));
+        }
+        char top[32];
+        std::snprintf(top, sizeof top, "%.2f", settings_.diff_scale);
+        label(draw, ImVec2(x0 - 40.0f, y0 - 8.0f), top);
+        label(draw, ImVec2(x0 - 22.0f, y1 - 8.0f), "0");
+        label(draw, ImVec2(w * 0.5f - 120.0f, h - 30.0f), "|raster - traced|, sRGB");
+    } else {
+        const char* names[] = {"OpenGL", "ray traced", "", "", "item buffer (object ids)"};
+        label(draw, ImVec2(w * 0.5f - 40.0f, h - 30.0f), names[static_cast<int>(view)]);
+    }
+}
+
+void Viewer::draw_help() {
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, screen.y * 0.5f), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.5f));
+    ImGui::Begin("keys", &help_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    const char* rows[][2] = {{"1 2 3 4 5", "raster, traced, split, difference, item buffer"},
+                             {"Tab (hold)", "flicker between raster and traced"},
+                             {"X", "swap the split view's sides"},
+                             {"H", "hide or show this panel"},
+                             {"left drag", "orbit (on the split divider: move it)"},
+                             {"right/middle drag", "pan"},
+                             {"wheel", "zoom"},
+                             {"W A S D, Q E", "fly; Shift: faster"},
+                             {"R", "reset the camera"},
+                             {"PageDown, PageUp", "next, previous scene in assets/scenes"},
+                             {"F12 or P", "save the view (and raster, traced, difference)"},
+                             {"F1 or ?", "this help"},
+                             {"Esc", "close help, or quit"}};
+    if (ImGui::BeginTable("keys", 2)) {
+        for (const auto& row : rows) {
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(row[0]);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(row[1]);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+}  // namespace rtview

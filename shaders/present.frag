@@ -1,0 +1,45 @@
+#version 330 core
+// The viewer's views (app/gl/compositor.h). Images are linear; the output is sRGB
+// encoded with core's transfer function, so the screen shows what the PNG files hold.
+
+uniform sampler2D u_raster;
+uniform sampler2D u_traced;
+uniform usampler2D u_ids;
+uniform sampler2D u_heat;     // core's heat_colour(t), 256 texels
+uniform sampler2D u_palette;  // core's item_colour(id), one texel per id
+uniform int u_palette_size;
+uniform int u_view;           // 0 raster, 1 traced, 2 split, 3 difference, 4 item buffer
+uniform vec3 u_viewport;      // width, height
+uniform float u_divider;
+uniform int u_swap;
+uniform float u_diff_scale;
+
+out vec4 o_colour;
+
+vec3 srgb_encode(vec3 linear) {
+    vec3 c = clamp(linear, 0.0, 1.0);
+    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+void main() {
+    vec2 uv = gl_FragCoord.xy / u_viewport.xy;
+    vec3 raster = srgb_encode(texture(u_raster, uv).rgb);
+    vec3 traced = srgb_encode(texture(u_traced, uv).rgb);
+    vec3 colour = raster;
+    if (u_view == 1) {
+        colour = traced;
+    } else if (u_view == 2) {
+        bool left = uv.x < u_divider;
+        colour = (left != (u_swap == 1)) ? raster : traced;
+        if (abs(gl_FragCoord.x - u_divider * u_viewport.x) < 1.5) colour = vec3(1.0);
+    } else if (u_view == 3) {
+        vec3 d = abs(raster - traced);
+        float t = clamp(max(d.r, max(d.g, d.b)) / u_diff_scale, 0.0, 1.0);
+        colour = srgb_encode(texture(u_heat, vec2((t * 255.0 + 0.5) / 256.0, 0.5)).rgb);
+    } else if (u_view == 4) {
+        uint id = texture(u_ids, uv).r;
+        int index = int(id % uint(u_palette_size));
+        colour = srgb_encode(texelFetch(u_palette, ivec2(index, 0), 0).rgb);
+    }
+    o_colour = vec4(colour, 1.0);
+}

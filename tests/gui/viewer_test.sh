@@ -1,0 +1,127 @@
+#!/usr/bin/env bash
+# rtview under a real X server (Xvfb): views, split divider, orbit and reset, a setting,
+# the item buffer, saving, resizing, quick scene switches, and quitting. What is on
+# screen is checked against rtrender's images of the same view.
+#   viewer_test.sh RTVIEW RTRENDER SCENE_DIR BAD_SCENE
+set -u
+rtview=$1 rtrender=$2 scenes=$3 bad_scene=$4
+source "$(dirname "$0")/lib.sh"
+
+scene=$scenes/tutorial.json  # 4:3, so rtrender at 800x600 sees exactly the window's view
+W=800 H=600
+"$rtrender" "$scene" --mode both --size ${W}x$H -q -o "$work/ref.png"
+"$rtrender" "$scene" --size ${W}x$H -q --no-shadows -o "$work/ref_noshadow.png"
+# Where the panel's check boxes are (its layout is fixed: ray-tracer settings first).
+SHADOWS="27 107" ITEM_BUFFER="27 130"
+
+start_xvfb
+start_app "$rtview" "$scene" --size ${W}x$H --view raster --save-dir "$work/saves"
+wait_for_window "^rtview - " || exit 1
+wait_for_log "^traced:" 1 || exit 1
+
+# Views, with the panel and labels hidden (H) so the whole window is the view.
+key h
+settle
+grab raster
+check "raster view shows rtrender's raster image" at_most 100 "$work/raster.png" "$work/ref.raster.png"
+after "^view: traced" key 2 && settle
+grab traced
+check "traced view shows rtrender's traced image" at_most 100 "$work/traced.png" "$work/ref.trace.png"
+check "raster and traced differ where the shadows fall" at_least 3000 "$work/ref.raster.png" "$work/ref.trace.png"
+check "  ... and so do the two views on screen" at_least 3000 "$work/raster.png" "$work/traced.png"
+
+# Split view: drag the divider from the middle to x = 600.
+after "^view: split" key 3 && settle
+drag 1 400 300 600 300
+settle
+grab split
+check "split: raster left of the divider" at_most 100 "$work/split.png" "$work/raster.png" 590x$H+0+0
+check "split: traced right of the divider" at_most 100 "$work/split.png" "$work/traced.png" 190x$H+610+0
+check "split: the divider moved (its left part is not traced)" at_least 2000 "$work/split.png" "$work/traced.png" 590x$H+0+0
+after "^swap:" key x && settle
+grab swapped
+check "X swaps the sides" at_most 100 "$work/swapped.png" "$work/traced.png" 590x$H+0+0
+
+# Holding Tab flickers between raster and traced.
+after "^flicker: on" xdotool keydown Tab
+seen_raster=0 seen_traced=0
+for i in 1 2 3 4 5 6 7 8; do
+    grab flicker
+    at_most 100 "$work/flicker.png" "$work/raster.png" >/dev/null && seen_raster=1
+    at_most 100 "$work/flicker.png" "$work/traced.png" >/dev/null && seen_traced=1
+    sleep 0.13
+done
+after "^flicker: off" xdotool keyup Tab
+check "holding Tab shows raster and traced in turn" test $seen_raster$seen_traced = 11
+
+# The difference and item-buffer views.
+after "^view: difference" key 4 && settle
+grab diff
+check "difference view is neither image" at_least 20000 "$work/diff.png" "$work/raster.png"
+convert -size ${W}x$H xc:black "$work/black.png"
+check "  ... and is black where they agree" at_most 100 "$work/diff.png" "$work/black.png" 200x100+600+0
+"$rtrender" "$scene" --mode itembuffer --size ${W}x$H -q -o "$work/ref.ids.png"
+after "^view: item buffer" key 5 && settle
+grab ids
+check "item-buffer view shows the object ids" at_most 100 "$work/ids.png" "$work/ref.ids.png"
+after "^view: split" key 3 && settle
+
+# Save: the view and, for the split view, raster, traced and difference images.
+after "^saved: .*diff.png" key F12
+check "saved four files" test -s "$work/saves/rtview-1.view.png" -a -s "$work/saves/rtview-1.raster.png" \
+    -a -s "$work/saves/rtview-1.trace.png" -a -s "$work/saves/rtview-1.diff.png"
+check "saved view matches the window" at_most 20 "$work/saves/rtview-1.view.png" "$work/swapped.png"
+check "saved traced image is rtrender's" at_most 20 "$work/saves/rtview-1.trace.png" "$work/ref.trace.png"
+check "saved raster image is rtrender's" at_most 20 "$work/saves/rtview-1.raster.png" "$work/ref.raster.png"
+
+# Orbit, then reset: the view changes, and R brings back the first one.
+after "^view: raster" key 1 && settle
+after "^traced:" drag 1 300 300 420 260 && settle
+grab orbited
+check "orbiting changes the view" at_least 5000 "$work/orbited.png" "$work/raster.png"
+after "^traced:" drag 3 300 300 340 330 && settle
+grab panned
+check "panning (right drag) changes the view" at_least 5000 "$work/panned.png" "$work/orbited.png"
+after "^traced:" key r && settle
+grab reset
+check "R resets the camera" at_most 100 "$work/reset.png" "$work/raster.png"
+
+# A setting: untick "shadows" in the panel; the traced view loses its shadows.
+key h
+settle
+after "^traced:" click $SHADOWS
+key h
+after "^view: traced" key 2 && settle
+grab noshadow
+check "shadows off in the panel: the traced view has none" at_most 100 "$work/noshadow.png" "$work/ref_noshadow.png"
+
+# The item buffer: tick it; the tracer reports what it saved and how many pixels differ.
+key h
+settle
+after "^item buffer:" click $ITEM_BUFFER
+line=$(grep "^item buffer:" "$work/app.log" | tail -n1)
+disagree=$(echo "$line" | sed -n 's/.*, \([0-9]*\) of \([0-9]*\) pixels disagree.*/\1 \2/p')
+check "item buffer on: at most 0.1% of pixels disagree ($line)" \
+    test -n "$disagree" -a "$(echo "$disagree" | awk '{print ($1 <= $2 / 1000)}')" = 1
+
+# Resizing (down to 1x1) and quick scene switches never crash.
+for size in "1 1" "1200 300" "200 900" "$W $H"; do xdotool windowsize "$wid" $size; sleep 0.3; done
+after "^scene:" key Next Next Next Next Next Next Next Prior
+after "^traced:" true
+check "still running after resizes and scene switches" kill -0 "$app_pid"
+
+key Escape
+for _ in $(seq 50); do kill -0 "$app_pid" 2>/dev/null || break; sleep 0.1; done
+status=0
+if kill -0 "$app_pid" 2>/dev/null; then status=124; else wait "$app_pid" || status=$?; fi
+app_pid=""
+check "Esc quits with status 0" test "$status" -eq 0
+
+# Without a display, or with a bad scene: one line, status 1.
+out=$(env -u DISPLAY -u WAYLAND_DISPLAY "$rtview" "$scene" 2>&1); status=$?
+check "no display: one line, exit 1 ($out)" test "$status" -eq 1 -a "$(echo "$out" | wc -l)" -eq 1
+check "  ... which points to rtrender" grep -q rtrender <<<"$out"
+out=$("$rtview" "$bad_scene" 2>&1); status=$?
+check "bad scene: one line, exit 1 ($out)" test "$status" -eq 1 -a "$(echo "$out" | wc -l)" -eq 1
+
+finish

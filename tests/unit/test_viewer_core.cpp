@@ -1,0 +1,140 @@
+// The viewer's GL-free parts: the camera controller and the progressive trace job.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include <glm/geometric.hpp>
+
+#include "app/viewer/camera_controller.h"
+#include "app/viewer/trace_job.h"
+#include "core/scene_loader.h"
+#include "test_util.h"
+
+namespace rtview {
+namespace {
+
+using rt::vec3;
+
+void expect_vec(const vec3& a, const vec3& b, float tol = 1e-4f) {
+    EXPECT_NEAR(a.x, b.x, tol);
+    EXPECT_NEAR(a.y, b.y, tol);
+    EXPECT_NEAR(a.z, b.z, tol);
+}
+
+rt::Camera home() { return rt::Camera::look_at({0, 2, 8}, {0, 1, 0}, {0, 1, 0}, 40.0f, 640, 480); }
+rt::Aabb unit_box() { return {vec3(-1.0f), vec3(1.0f)}; }
+
+TEST(CameraController, StartsAtTheScenesCamera) {
+    const CameraController c(home(), unit_box());
+    const rt::Camera cam = c.camera(640, 480);
+    expect_vec(cam.eye, home().eye);
+    expect_vec(cam.n, home().n);
+    expect_vec(cam.u, home().u);
+    EXPECT_FLOAT_EQ(cam.H, home().H);
+}
+
+TEST(CameraController, OrbitKeepsTheDistanceAndComesBack) {
+    CameraController c(home(), unit_box());
+    const float d0 = glm::length(c.eye() - c.target());
+    c.orbit(120.0f, -40.0f);
+    EXPECT_NEAR(glm::length(c.eye() - c.target()), d0, 1e-4f);
+    EXPECT_GT(glm::length(c.eye() - home().eye), 0.5f);
+    c.orbit(-120.0f, 40.0f);
+    expect_vec(c.eye(), home().eye);
+}
+
+TEST(CameraController, PitchStopsShortOfThePoles) {
+    CameraController c(home(), unit_box());
+    c.orbit(0.0f, 100000.0f);
+    const rt::Camera cam = c.camera(64, 64);
+    EXPECT_TRUE(std::isfinite(cam.u.x) && std::isfinite(cam.v.y) && std::isfinite(cam.n.z));
+    EXPECT_LT(std::fabs(glm::dot(cam.n, vec3(0, 1, 0))), 1.0f);
+}
+
+TEST(CameraController, ZoomPanFlyAndReset) {
+    CameraController c(home(), unit_box());
+    const std::uint64_t v0 = c.version();
+    const float d0 = glm::length(c.eye() - c.target());
+    c.zoom(2.0f);
+    EXPECT_NEAR(glm::length(c.eye() - c.target()), d0 * 0.85f * 0.85f, 1e-4f);
+    const vec3 t0 = c.target();
+    c.pan(100.0f, 0.0f, 480);  // dragging right moves the scene right: the target goes left
+    EXPECT_LT(glm::dot(c.target() - t0, home().u), 0.0f);
+    const vec3 e0 = c.eye();
+    c.fly({0, 0, 1}, 0.5f, false);  // forward is -n
+    EXPECT_GT(glm::dot(c.eye() - e0, -home().n), 0.0f);
+    EXPECT_GT(c.version(), v0);
+    c.reset();
+    expect_vec(c.eye(), home().eye);
+}
+
+std::shared_ptr<const rt::Scene> tutorial() {
+    rt::LoadedScene loaded = rt::load_scene(rt::test::scene_path("tutorial.json"));
+    loaded.scene.build();
+    return std::make_shared<const rt::Scene>(std::move(loaded.scene));
+}
+
+std::optional<TraceResult> wait_for_level(TraceJob& job, int level) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (auto r = job.take(); r && r->level == level) return r;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return std::nullopt;
+}
+
+TEST(TraceJob, RefinesToFullResolution) {
+    TraceJob job;
+    TraceRequest request;
+    request.scene = tutorial();
+    request.camera = request.scene->camera.resized(160, 120);
+    request.levels = {8, 2, 1};
+    request.id = 7;
+    job.submit(request);
+    const auto full = wait_for_level(job, 1);
+    ASSERT_TRUE(full);
+    EXPECT_EQ(full->id, 7u);
+    EXPECT_EQ(full->image.width, 160);
+    EXPECT_EQ(full->image.height, 120);
+    EXPECT_EQ(full->stats.rays.primary, 160u * 120u);
+}
+
+TEST(TraceJob, CancelReturnsPromptlyAndLetsGoOfTheScene) {
+    TraceJob job;
+    std::shared_ptr<const rt::Scene> scene = tutorial();
+    TraceRequest request;
+    request.scene = scene;
+    request.camera = scene->camera.resized(4000, 3000);  // long enough to be running
+    request.levels = {1};
+    job.submit(request);
+    request.scene.reset();
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const auto start = std::chrono::steady_clock::now();
+    job.cancel();
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+    EXPECT_FALSE(job.busy());
+    EXPECT_EQ(scene.use_count(), 1) << "the worker still holds the scene";
+    EXPECT_FALSE(job.take().has_value());
+}
+
+TEST(TraceJob, ANewRequestReplacesTheRunningOne) {
+    TraceJob job;
+    TraceRequest slow;
+    slow.scene = tutorial();
+    slow.camera = slow.scene->camera.resized(4000, 3000);
+    slow.levels = {1};
+    slow.id = 1;
+    job.submit(slow);
+    TraceRequest quick = slow;
+    quick.camera = slow.scene->camera.resized(64, 48);
+    quick.id = 2;
+    job.submit(quick);
+    const auto r = wait_for_level(job, 1);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->id, 2u);
+    EXPECT_EQ(r->image.width, 64);
+}
+
+}  // namespace
+}  // namespace rtview
