@@ -107,7 +107,8 @@ class Viewer {
     bool panel_ = true;
     bool flicker_ = false;
     bool save_requested_ = false;
-    std::optional<std::string> dropped_;
+    std::optional<std::string> dropped_;  // a scene to load before the next frame
+    std::string picked_;                  // the last scene PageDown/PageUp asked for
     std::string error_;
     std::string title_;
 

@@ -48,11 +48,12 @@ void label(ImDrawList* draw, ImVec2 at, const char* text) {
 void Viewer::cycle_scene(int step) {
     const auto scenes = asset_scenes();
     if (scenes.empty()) return;
-    const auto current = std::find(scenes.begin(), scenes.end(),
-                                   std::filesystem::path(dropped_.value_or(scene_path_)));
+    // From the last scene asked for, loaded or not, so a broken one is stepped over.
+    const std::string from = dropped_.value_or(picked_.empty() ? scene_path_ : picked_);
+    const auto current = std::find(scenes.begin(), scenes.end(), std::filesystem::path(from));
     const auto n = static_cast<long>(scenes.size());
     const long index = current == scenes.end() ? 0 : ((current - scenes.begin()) + step + n) % n;
-    dropped_ = scenes[static_cast<std::size_t>(index)].string();
+    dropped_ = picked_ = scenes[static_cast<std::size_t>(index)].string();
 }
 
 void Viewer::draw_panel() {

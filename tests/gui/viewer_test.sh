@@ -14,6 +14,13 @@ W=800 H=600
 # Where the panel's check boxes are (its layout is fixed: ray-tracer settings first).
 SHADOWS="27 107" ITEM_BUFFER="27 130"
 
+# The scene picker's folder: the real scenes plus one that cannot load.
+mkdir -p "$work/assets/scenes"
+cp "$scenes"/*.json "$work/assets/scenes/"
+ln -s "$(cd "$scenes/../models" && pwd)" "$work/assets/models"
+cp "$bad_scene" "$work/assets/scenes/zz_broken.json"
+export RTVIEW_ASSET_DIR=$work/assets
+
 start_xvfb
 start_app "$rtview" "$scene" --size ${W}x$H --view raster --save-dir "$work/saves"
 wait_for_window "^rtview - " || exit 1
@@ -104,11 +111,19 @@ disagree=$(echo "$line" | sed -n 's/.*, \([0-9]*\) of \([0-9]*\) pixels disagree
 check "item buffer on: at most 0.1% of pixels disagree ($line)" \
     test -n "$disagree" -a "$(echo "$disagree" | awk '{print ($1 <= $2 / 1000)}')" = 1
 
-# Resizing (down to 1x1) and quick scene switches never crash.
+# Resizing (down to 1x1), hiding the window, and quick scene switches never crash.
 for size in "1 1" "1200 300" "200 900" "$W $H"; do xdotool windowsize "$wid" $size; sleep 0.3; done
+xdotool windowunmap "$wid"; sleep 0.5; xdotool windowmap "$wid"; sleep 0.3
 after "^scene:" key Next Next Next Next Next Next Next Prior
 after "^traced:" true
-check "still running after resizes and scene switches" kill -0 "$app_pid"
+check "still running after resizes, unmapping and scene switches" kill -0 "$app_pid"
+
+# A scene that does not load, at run time: the error is reported and the scene kept.
+# (The picker and PageDown go through the same loading as a dropped file.)
+errors=$(log_count "radius: must be > 0")
+for _ in 1 2 3 4 5; do after "^scene:\|radius: must be > 0" key Next; done  # one of them is broken
+check "a broken scene at run time is reported" test "$(log_count "radius: must be > 0")" -gt "$errors"
+check "  ... and the viewer keeps running" kill -0 "$app_pid"
 
 key Escape
 for _ in $(seq 50); do kill -0 "$app_pid" 2>/dev/null || break; sleep 0.1; done
