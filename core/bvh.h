@@ -34,10 +34,13 @@ class Bvh {
         return nodes_.size() * sizeof(BvhNode) + prims_.size() * sizeof(std::uint32_t);
     }
     std::size_t node_count() const { return nodes_.size(); }
+    // The primitives in leaf order: slot s of the traversal is primitive order()[s].
+    std::span<const std::uint32_t> order() const { return prims_; }
 
     // Visits the primitives whose boxes the ray enters within (0, t_max), nearest box
-    // first. `hit(prim, t_max)` tests one primitive and returns true on a hit, having
-    // shortened t_max. With kAnyHit the walk stops at the first hit (shadow feelers).
+    // first. `hit(slot, t_max)` tests the primitive in that slot of order() and returns
+    // true on a hit, having shortened t_max. With kAnyHit the walk stops at the first
+    // hit (shadow feelers). Slots let a caller keep its primitives' data in leaf order.
     template <bool kAnyHit, class HitPrim>
     bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const;
 
@@ -61,7 +64,7 @@ bool Bvh::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
         const BvhNode& node = nodes_[index];
         if (node.is_leaf()) {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                if (hit(prims_[i], t_max)) {
+                if (hit(i, t_max)) {
                     found = true;
                     if constexpr (kAnyHit) return true;
                 }

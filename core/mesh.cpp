@@ -9,14 +9,20 @@
 
 namespace rt {
 
-void TriangleMesh::build() {
+void TriangleMesh::build(AccelKind kind) {
     bounds_ = Aabb{};
     std::vector<Aabb> boxes(triangles.size());
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         for (int k = 0; k < 3; ++k) boxes[i].grow(positions[triangles[i][k]]);
         bounds_.grow(boxes[i]);
     }
-    bvh_.build(boxes);
+    accel_.build(boxes, kind);
+    const auto order = accel_.order();
+    packed_.resize(order.size());
+    for (std::size_t s = 0; s < order.size(); ++s) {
+        const glm::uvec3 idx = triangles[order[s]];
+        packed_[s] = pack(positions[idx[0]], positions[idx[1]], positions[idx[2]]);
+    }
 }
 
 Aabb bounds_of(const TriangleMesh& mesh) {
@@ -29,17 +35,16 @@ Aabb bounds_of(const TriangleMesh& mesh) {
 std::size_t TriangleMesh::memory_bytes() const {
     return positions.size() * sizeof(vec3) + triangles.size() * sizeof(glm::uvec3) +
            corner_normals.size() * sizeof(vec3) + materials.size() * sizeof(std::uint32_t) +
-           bvh_.memory_bytes();
+           accel_.memory_bytes() + packed_.size() * sizeof(PackedTriangle);
 }
 
 bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
-    return bvh_.traverse<false>(r, hit.t, [&](std::uint32_t tri, float& t_max) {
-        const glm::uvec3 idx = triangles[tri];
-        const auto h =
-            intersect_triangle(positions[idx[0]], positions[idx[1]], positions[idx[2]], r, t_max);
+    const auto order = accel_.order();
+    return accel_.traverse<false>(r, hit.t, [&](std::uint32_t slot, float& t_max) {
+        const auto h = rt::intersect(packed_[slot], r, t_max);
         if (!h) return false;
         t_max = h->t;
-        hit.prim = tri;
+        hit.prim = order[slot];
         hit.b1 = h->b1;
         hit.b2 = h->b2;
         return true;
@@ -47,11 +52,8 @@ bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
 }
 
 bool TriangleMesh::occluded(const Ray& r, float t_max) const {
-    return bvh_.traverse<true>(r, t_max, [&](std::uint32_t tri, float& t_limit) {
-        const glm::uvec3 idx = triangles[tri];
-        return intersect_triangle(positions[idx[0]], positions[idx[1]], positions[idx[2]], r,
-                                  t_limit)
-            .has_value();
+    return accel_.traverse<true>(r, t_max, [&](std::uint32_t slot, float& t_limit) {
+        return rt::intersect(packed_[slot], r, t_limit).has_value();
     });
 }
 

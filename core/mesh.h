@@ -8,7 +8,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/bvh.h"
+#include "core/accel.h"
+#include "core/shapes.h"
 #include "core/hit.h"
 
 namespace rt {
@@ -20,8 +21,8 @@ struct TriangleMesh {
     std::vector<vec3> corner_normals;      // 3 per triangle (smooth shading); empty: flat
     std::vector<std::uint32_t> materials;  // per triangle, scene material index; may be empty
 
-    // Bounds and BVH; call after filling the arrays.
-    void build();
+    // Bounds and acceleration structure; call after filling the arrays.
+    void build(AccelKind kind = AccelKind::kBvh);
     const Aabb& bounds() const { return bounds_; }
     std::size_t memory_bytes() const;
 
@@ -36,7 +37,8 @@ struct TriangleMesh {
 
   private:
     Aabb bounds_;
-    Bvh bvh_;
+    Accel accel_;
+    std::vector<PackedTriangle> packed_;  // in the structure's slot order
 };
 
 // The box around the triangles (unused vertices left out).

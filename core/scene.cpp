@@ -59,8 +59,8 @@ Aabb Scene::object_bounds(const Object& o) const {
     return o.transform ? box.transformed(o.transform->m) : box;
 }
 
-void Scene::build() {
-    for (auto& mesh : meshes) mesh.build();
+void Scene::build(AccelKind kind) {
+    for (auto& mesh : meshes) mesh.build(kind);
     bounded_.clear();
     unbounded_.clear();
     std::vector<Aabb> boxes;
@@ -74,7 +74,10 @@ void Scene::build() {
         bounded_.push_back(i);
         boxes.push_back(box);
     }
-    top_.build(boxes);
+    top_.build(boxes, kind);
+    std::vector<std::uint32_t> by_slot(bounded_.size());  // bounded_ is kept in slot order
+    for (std::size_t slot = 0; slot < by_slot.size(); ++slot) by_slot[slot] = bounded_[top_.order()[slot]];
+    bounded_ = std::move(by_slot);
 }
 
 bool Scene::intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const {
@@ -103,9 +106,9 @@ bool Scene::intersect_primitive(std::uint32_t object, std::uint32_t prim, const 
 bool Scene::intersect(const Ray& r, Hit& hit) const {
     bool found = false;
     for (std::uint32_t i : unbounded_) found |= intersect_object(i, r, hit);
-    found |= top_.traverse<false>(r, hit.t, [&](std::uint32_t prim, float&) {
+    found |= top_.traverse<false>(r, hit.t, [&](std::uint32_t slot, float&) {
         // hit.t is the traversal's t_max: intersect_object shortens it on a hit.
-        return intersect_object(bounded_[prim], r, hit);
+        return intersect_object(bounded_[slot], r, hit);
     });
     return found;
 }
@@ -113,8 +116,8 @@ bool Scene::intersect(const Ray& r, Hit& hit) const {
 bool Scene::occluded(const Ray& r, float t_max) const {
     for (std::uint32_t i : unbounded_)
         if (occluded_shape(*this, objects[i].shape, object_ray(objects[i], r), t_max)) return true;
-    return top_.traverse<true>(r, t_max, [&](std::uint32_t prim, float& t_limit) {
-        const Object& o = objects[bounded_[prim]];
+    return top_.traverse<true>(r, t_max, [&](std::uint32_t slot, float& t_limit) {
+        const Object& o = objects[bounded_[slot]];
         return occluded_shape(*this, o.shape, object_ray(o, r), t_limit);
     });
 }

@@ -9,7 +9,7 @@
 #include <variant>
 #include <vector>
 
-#include "core/bvh.h"
+#include "core/accel.h"
 #include "core/camera.h"
 #include "core/hit.h"
 #include "core/light.h"
@@ -44,7 +44,8 @@ class Scene {
     std::vector<TriangleMesh> meshes;
     std::vector<Object> objects;
 
-    void build();
+    void build(AccelKind kind = AccelKind::kBvh);
+    AccelKind accel_kind() const { return top_.kind(); }
 
     // Closest hit in (0, hit.t); hit.t may be preset to limit the search.
     bool intersect(const Ray& r, Hit& hit) const;
@@ -65,8 +66,8 @@ class Scene {
   private:
     Aabb object_bounds(const Object& o) const;
 
-    Bvh top_;                               // over the bounded objects
-    std::vector<std::uint32_t> bounded_;    // BVH prim -> object
+    Accel top_;                             // over the bounded objects
+    std::vector<std::uint32_t> bounded_;    // traversal slot -> object
     std::vector<std::uint32_t> unbounded_;  // planes: tested for every ray
 };
 

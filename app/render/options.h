@@ -14,6 +14,7 @@ struct Options {
     std::string stats;           // JSON file, empty: none
     std::string mode = "trace";  // trace | raster | both | itembuffer
     std::string gl = "auto";     // egl | osmesa | auto
+    std::string accel = "bvh";   // bvh | grid | brute
     bool item_buffer = false;
     int threads = 0;
     rt::TraceOptions trace;

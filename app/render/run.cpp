@@ -213,8 +213,9 @@ int Job::run() {
     if (size) scene.camera = scene.camera.resized(size->first, size->second);
     stats_["load_seconds"] = seconds_since(start);
     start = Clock::now();
-    scene.build();
+    scene.build(*rt::parse_accel(o_.accel));  // CLI11 allowed only known names
     stats_["build_seconds"] = seconds_since(start);
+    stats_["accel"] = o_.accel;
 
     if (o_.mode == "trace") {
         write(trace(), main_output, o_);

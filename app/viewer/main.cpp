@@ -1,5 +1,6 @@
 // rtview: the interactive viewer.
 //   rtview [SCENE] [--size WxH] [--view raster|trace|split|diff|itembuffer] [--save-dir DIR]
+//          [--accel bvh|grid|brute]
 
 #include <charconv>
 #include <iostream>
@@ -25,7 +26,7 @@ bool parse_size(const std::string& text, int& w, int& h) {
 int main(int argc, char** argv) {
     rtview::ViewerOptions options;
     options.scene = std::string(RTVIEW_ASSET_DIR) + "/scenes/whitted.json";
-    std::string size, view = "split", save_dir = ".";
+    std::string size, view = "split", save_dir = ".", accel = "bvh";
     CLI::App app{"rtview: one scene, rasterised by OpenGL and ray traced, side by side"};
     app.add_option("scene", options.scene,
                    "Scene file (.json or .obj); default: the Whitted scene");
@@ -33,6 +34,8 @@ int main(int argc, char** argv) {
     app.add_option("--view", view, "First view")
         ->check(CLI::IsMember({"raster", "trace", "split", "diff", "itembuffer"}));
     app.add_option("--save-dir", save_dir, "Where F12 saves images (default: here)");
+    app.add_option("--accel", accel, "Acceleration structure: bvh (default), grid or brute")
+        ->check(CLI::IsMember({"bvh", "grid", "brute"}));
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -53,6 +56,7 @@ int main(int argc, char** argv) {
                                                        {"itembuffer", rt::gl::View::kItemBuffer}};
     options.view = views.at(view);
     options.save_dir = save_dir;
+    options.accel = *rt::parse_accel(accel);
     try {
         rtview::Viewer viewer(options);
         return viewer.run();

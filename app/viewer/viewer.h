@@ -27,6 +27,7 @@ struct ViewerOptions {
     int height = 720;
     View view = View::kSplit;
     std::filesystem::path save_dir = ".";
+    rt::AccelKind accel = rt::AccelKind::kBvh;
 };
 
 struct Settings {

@@ -1,0 +1,52 @@
+#include "core/accel.h"
+
+namespace rt {
+
+const char* accel_name(AccelKind kind) {
+    switch (kind) {
+        case AccelKind::kBvh: return "bvh";
+        case AccelKind::kGrid: return "grid";
+        case AccelKind::kBrute: return "brute";
+    }
+    return "?";
+}
+
+std::optional<AccelKind> parse_accel(const std::string& name) {
+    for (AccelKind k : {AccelKind::kBvh, AccelKind::kGrid, AccelKind::kBrute})
+        if (name == accel_name(k)) return k;
+    return std::nullopt;
+}
+
+void Accel::build(std::span<const Aabb> boxes, AccelKind kind) {
+    kind_ = kind;
+    order_.clear();
+    switch (kind) {
+        case AccelKind::kBvh: {
+            Bvh bvh;
+            bvh.build(boxes);
+            impl_ = std::move(bvh);
+            return;
+        }
+        case AccelKind::kGrid: {
+            UniformGrid grid;
+            grid.build(boxes);
+            impl_ = std::move(grid);
+            break;
+        }
+        case AccelKind::kBrute: {
+            BruteForce brute;
+            brute.build(boxes);
+            impl_ = brute;
+            break;
+        }
+    }
+    order_.resize(boxes.size());
+    std::iota(order_.begin(), order_.end(), 0u);
+}
+
+std::size_t Accel::memory_bytes() const {
+    const std::size_t own = order_.size() * sizeof(std::uint32_t);
+    return own + std::visit([](const auto& impl) { return impl.memory_bytes(); }, impl_);
+}
+
+}  // namespace rt

@@ -1,0 +1,67 @@
+#pragma once
+// The acceleration structure behind a mesh's triangles and a scene's objects, chosen at
+// build time: the BVH (the default), a uniform grid, or brute force, the last two kept
+// as comparison points (rtrender --accel, rtbench).
+
+#include <numeric>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "core/bvh.h"
+#include "core/grid.h"
+
+namespace rt {
+
+enum class AccelKind { kBvh, kGrid, kBrute };
+
+const char* accel_name(AccelKind kind);
+std::optional<AccelKind> parse_accel(const std::string& name);  // "bvh", "grid", "brute"
+
+// Tests every primitive: the reference the others must agree with.
+class BruteForce {
+public:
+    void build(std::span<const Aabb> boxes) { count_ = static_cast<std::uint32_t>(boxes.size()); }
+    template <bool kAnyHit, class HitPrim>
+    bool traverse(const Ray&, float& t_max, HitPrim&& hit) const {
+        bool found = false;
+        for (std::uint32_t p = 0; p < count_; ++p) {
+            if (hit(p, t_max)) {
+                found = true;
+                if constexpr (kAnyHit) return true;
+            }
+        }
+        return found;
+    }
+    std::size_t memory_bytes() const { return 0; }
+
+private:
+    std::uint32_t count_ = 0;
+};
+
+class Accel {
+public:
+    void build(std::span<const Aabb> boxes, AccelKind kind);
+    AccelKind kind() const { return kind_; }
+    std::size_t memory_bytes() const;
+    // Slot s of the traversal is primitive order()[s]: callers may keep their data in
+    // slot order (the BVH's leaf order) for locality.
+    std::span<const std::uint32_t> order() const {
+        if (const auto* bvh = std::get_if<Bvh>(&impl_)) return bvh->order();
+        return order_;
+    }
+
+    // Visits candidate primitives for a ray in (0, t_max); `hit(slot, t_max)` tests one
+    // and returns true on a hit, having shortened t_max. kAnyHit stops at the first hit.
+    template <bool kAnyHit, class HitPrim>
+    bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
+        return std::visit([&](const auto& impl) { return impl.template traverse<kAnyHit>(ray, t_max, hit); }, impl_);
+    }
+
+private:
+    AccelKind kind_ = AccelKind::kBvh;
+    std::variant<Bvh, UniformGrid, BruteForce> impl_;
+    std::vector<std::uint32_t> order_;  // the grid's and brute force's: the identity
+};
+
+}  // namespace rt
