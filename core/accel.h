@@ -58,6 +58,15 @@ public:
         return std::visit([&](const auto& impl) { return impl.template traverse<kAnyHit>(ray, t_max, hit); }, impl_);
     }
 
+    // The same a leaf at a time, `hit_leaf(first_slot, count, t_max)`: BVH leaves, or
+    // single primitives for the other structures.
+    template <bool kAnyHit, class HitLeaf>
+    bool traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
+        if (const auto* bvh = std::get_if<Bvh>(&impl_)) return bvh->traverse_leaves<kAnyHit>(ray, t_max, hit_leaf);
+        return traverse<kAnyHit>(ray, t_max, [&](std::uint32_t slot, float& limit) { return hit_leaf(slot, 1u, limit); });
+    }
+    const Bvh* bvh() const { return std::get_if<Bvh>(&impl_); }
+
 private:
     AccelKind kind_ = AccelKind::kBvh;
     std::variant<Bvh, UniformGrid, BruteForce> impl_;

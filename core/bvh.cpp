@@ -8,7 +8,7 @@ namespace rt {
 namespace {
 
 constexpr int kBins = 16;
-constexpr std::uint32_t kMaxLeafSize = 8;
+constexpr std::uint32_t kMaxLeafSize = 2;
 constexpr float kTraversalCost = 1.0f;          // relative to one primitive test
 constexpr std::uint32_t kParallelMin = 20000;  // subtrees smaller than this are built in place
 
@@ -27,42 +27,38 @@ struct Builder {
     std::vector<BvhNode> nodes;
     int parallel_depth = 0;  // levels still allowed to hand a subtree to another thread
 
-    // Binned SAH (Wald, "On fast construction of SAH-based BVHs", 2007): one pass bins
-    // the centroids along all three axes, then a sweep per axis finds the cheapest split.
+    // Binned SAH (Wald, "On fast construction of SAH-based BVHs", 2007) along the axis
+    // where the centroids spread most: one pass bins them, a sweep finds the cheapest split.
     Split find_split(std::uint32_t begin, std::uint32_t end, const Aabb& centre_box) const {
-        std::array<std::array<Aabb, kBins>, 3> bin_box{};
-        std::array<std::array<std::uint32_t, kBins>, 3> bin_count{};
         const vec3 extent = centre_box.extent();
-        vec3 scale;
-        for (int a = 0; a < 3; ++a) scale[a] = extent[a] > 0.0f ? static_cast<float>(kBins) / extent[a] : 0.0f;
+        const int axis = extent.x >= extent.y ? (extent.x >= extent.z ? 0 : 2) : (extent.y >= extent.z ? 1 : 2);
+        if (!(extent[axis] > 0.0f)) return {};
+        const float lo = centre_box.lo[axis], scale = static_cast<float>(kBins) / extent[axis];
+        std::array<Aabb, kBins> bin_box{};
+        std::array<std::uint32_t, kBins> bin_count{};
         for (std::uint32_t i = begin; i < end; ++i) {
             const std::uint32_t p = prims[i];
-            for (int a = 0; a < 3; ++a) {
-                const int b = std::min(kBins - 1, static_cast<int>((centres[p][a] - centre_box.lo[a]) * scale[a]));
-                bin_box[a][b].grow(boxes[p]);
-                ++bin_count[a][b];
-            }
+            const int b = std::min(kBins - 1, static_cast<int>((centres[p][axis] - lo) * scale));
+            bin_box[b].grow(boxes[p]);
+            ++bin_count[b];
+        }
+        // Sweep from the right for every right side's cost, then from the left.
+        std::array<float, kBins> right_cost{};
+        Aabb acc;
+        std::uint32_t n = 0;
+        for (int b = kBins - 1; b > 0; --b) {
+            acc.grow(bin_box[b]);
+            n += bin_count[b];
+            right_cost[b] = acc.half_area() * static_cast<float>(n);
         }
         Split best;
-        for (int axis = 0; axis < 3; ++axis) {
-            if (!(extent[axis] > 0.0f)) continue;
-            // Sweep from the right for every right side's cost, then from the left.
-            std::array<float, kBins> right_cost{};
-            Aabb acc;
-            std::uint32_t n = 0;
-            for (int b = kBins - 1; b > 0; --b) {
-                acc.grow(bin_box[axis][b]);
-                n += bin_count[axis][b];
-                right_cost[b] = acc.half_area() * static_cast<float>(n);
-            }
-            acc = Aabb{};
-            n = 0;
-            for (int b = 0; b < kBins - 1; ++b) {
-                acc.grow(bin_box[axis][b]);
-                n += bin_count[axis][b];
-                const float cost = acc.half_area() * static_cast<float>(n) + right_cost[b + 1];
-                if (cost < best.cost) best = {axis, centre_box.lo[axis] + static_cast<float>(b + 1) / scale[axis], cost};
-            }
+        acc = Aabb{};
+        n = 0;
+        for (int b = 0; b < kBins - 1; ++b) {
+            acc.grow(bin_box[b]);
+            n += bin_count[b];
+            const float cost = acc.half_area() * static_cast<float>(n) + right_cost[b + 1];
+            if (cost < best.cost) best = {axis, lo + static_cast<float>(b + 1) / scale, cost};
         }
         return best;
     }

@@ -43,58 +43,76 @@ class Bvh {
     // hit (shadow feelers). Slots let a caller keep its primitives' data in leaf order.
     template <bool kAnyHit, class HitPrim>
     bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const;
+    // The same a leaf at a time: `hit_leaf(first_slot, count, t_max)`.
+    template <bool kAnyHit, class HitLeaf>
+    bool traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const;
+    // The leaves' slot ranges, for callers that lay their data out per leaf.
+    template <class F>
+    void for_each_leaf(F&& f) const {
+        for (const BvhNode& n : nodes_)
+            if (n.is_leaf()) f(n.first, n.count);
+    }
 
   private:
     std::vector<BvhNode> nodes_;
     std::vector<std::uint32_t> prims_;
 };
 
-template <bool kAnyHit, class HitPrim>
-bool Bvh::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
+template <bool kAnyHit, class HitLeaf>
+bool Bvh::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
     if (nodes_.empty()) return false;
     const vec3 inv_dir = 1.0f / ray.dir;
-    if (slab_entry({nodes_[0].lo, nodes_[0].hi}, ray.origin, inv_dir, t_max) == kInfinity)
-        return false;
+    const auto entry = [&](std::uint32_t n) { return slab_entry({nodes_[n].lo, nodes_[n].hi}, ray.origin, inv_dir, t_max); };
+    if (entry(0) == kInfinity) return false;
 
-    std::array<std::uint32_t, kMaxDepth + 2> stack;
+    struct Pending {
+        std::uint32_t node;
+        float t_entry;  // a node that starts beyond a hit found since is skipped unvisited
+    };
+    std::array<Pending, kMaxDepth + 2> stack;
     int top = 0;
     std::uint32_t index = 0;
     bool found = false;
     for (;;) {
         const BvhNode& node = nodes_[index];
         if (node.is_leaf()) {
-            for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                if (hit(i, t_max)) {
-                    found = true;
-                    if constexpr (kAnyHit) return true;
-                }
+            if (hit_leaf(node.first, node.count, t_max)) {
+                found = true;
+                if constexpr (kAnyHit) return true;
             }
         } else {
-            const std::uint32_t left = index + 1;
-            const std::uint32_t right = node.first;
-            const float t_left =
-                slab_entry({nodes_[left].lo, nodes_[left].hi}, ray.origin, inv_dir, t_max);
-            const float t_right =
-                slab_entry({nodes_[right].lo, nodes_[right].hi}, ray.origin, inv_dir, t_max);
-            const bool go_left = t_left != kInfinity;
-            const bool go_right = t_right != kInfinity;
-            if (go_left && go_right) {
+            const std::uint32_t left = index + 1, right = node.first;
+            const float t_left = entry(left), t_right = entry(right);
+            if (t_left != kInfinity && t_right != kInfinity) {  // both: the nearer first
                 const bool left_first = t_left <= t_right;
-                stack[top++] = left_first ? right : left;
+                stack[top++] = left_first ? Pending{right, t_right} : Pending{left, t_left};
                 index = left_first ? left : right;
                 continue;
             }
-            if (go_left || go_right) {
-                index = go_left ? left : right;
+            if (t_left != kInfinity || t_right != kInfinity) {
+                index = t_left != kInfinity ? left : right;
                 continue;
             }
         }
-        // A popped node may lie beyond a hit found since it was pushed; its children's
-        // slab tests, made against the shortened t_max, reject it then.
+        while (top > 0 && stack[top - 1].t_entry >= t_max) --top;
         if (top == 0) break;
-        index = stack[--top];
+        index = stack[--top].node;
     }
     return found;
+}
+
+template <bool kAnyHit, class HitPrim>
+bool Bvh::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
+    return traverse_leaves<kAnyHit>(ray, t_max, [&](std::uint32_t first, std::uint32_t count, float& limit) {
+        bool found = false;
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            if (hit(i, limit)) {
+                found = true;
+                if constexpr (kAnyHit) return true;
+            }
+        }
+        return found;
+    });
 }
 
 }  // namespace rt

@@ -10,6 +10,7 @@
 
 #include "core/accel.h"
 #include "core/shapes.h"
+#include "core/triangle4.h"
 #include "core/hit.h"
 
 namespace rt {
@@ -25,6 +26,7 @@ struct TriangleMesh {
     void build(AccelKind kind = AccelKind::kBvh);
     const Aabb& bounds() const { return bounds_; }
     std::size_t memory_bytes() const;
+    std::size_t accel_memory_bytes() const;  // the structure and its packed triangles only
 
     // Closest hit in (0, hit.t): fills t, prim, b1, b2 and returns true.
     bool intersect(const Ray& r, Hit& hit) const;
@@ -38,7 +40,11 @@ struct TriangleMesh {
   private:
     Aabb bounds_;
     Accel accel_;
-    std::vector<PackedTriangle> packed_;  // in the structure's slot order
+    // The triangles in the structure's slot order: for a BVH four to a Triangle4, each
+    // leaf starting a new one (leaf_pack_[first slot] is its first); else one by one.
+    std::vector<Triangle4> packs_;
+    std::vector<std::uint32_t> leaf_pack_;
+    std::vector<PackedTriangle> packed_;
 };
 
 // The box around the triangles (unused vertices left out).

@@ -16,6 +16,7 @@ packages=(
   libosmesa6-dev                      # headless OSMesa
   libglfw3-dev libimgui-dev libglx-mesa0  # the viewer: window, panel, GLX on Mesa
   xvfb xdotool imagemagick            # the viewer's tests: X server, input, screen grabs
+  libembree-dev gnuplot-nox           # rtbench: the reference BVH, and its plots
 )
 
 missing=()

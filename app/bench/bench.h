@@ -1,0 +1,63 @@
+#pragma once
+// rtbench's pieces: the triangles every structure is given, the ray sets every structure
+// traces, and the structures themselves behind one small interface, so that ours and
+// Intel Embree see the same triangles, the same rays and the same threads.
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/accel.h"
+#include "core/mesh.h"
+#include "core/scene.h"
+
+namespace rtbench {
+
+using rt::vec3;
+
+// The scene as world-space triangles: meshes and triangles as they are, spheres
+// tessellated (96 slices); planes, being infinite, are left out.
+rt::TriangleMesh flatten(const rt::Scene& scene);
+
+struct RaySet {
+    std::string name;  // primary, shadow, secondary
+    std::vector<rt::Ray> rays;
+    std::vector<float> t_max;
+    bool occlusion = false;  // any-hit queries (shadow feelers)
+};
+
+struct Result {  // of one ray
+    float t = rt::kInfinity;
+    std::uint32_t prim = ~0u;
+    bool hit() const { return t < rt::kInfinity; }
+};
+
+// Coherent primary rays from `camera`; shadow feelers from their hits to every light;
+// incoherent secondary rays, cosine-distributed about the hit normals (seeded, so every
+// run and every structure gets the same rays).
+std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMesh& mesh,
+                                  const std::vector<rt::Light>& lights, const std::vector<Result>& primary_hits);
+
+class Structure {
+public:
+    virtual ~Structure() = default;
+    virtual std::string name() const = 0;
+    virtual void prepare(const rt::TriangleMesh& mesh) = 0;  // copies the triangles in: not timed
+    virtual void build() = 0;                               // the structure itself: timed
+    virtual std::size_t memory_bytes() const = 0;
+    virtual Result intersect(const rt::Ray& ray, float t_max) const = 0;
+    virtual bool occluded(const rt::Ray& ray, float t_max) const = 0;
+};
+
+std::unique_ptr<Structure> make_ours(rt::AccelKind kind);
+std::unique_ptr<Structure> make_embree(int threads);  // nullptr when built without Embree
+bool have_embree();
+
+// Runs body(begin, end) over [0, count) in chunks on `threads` threads.
+void parallel_for(std::size_t count, int threads, const std::function<void(std::size_t, std::size_t)>& body);
+
+double median(std::vector<double> values);
+
+}  // namespace rtbench

@@ -1,0 +1,135 @@
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app/bench/bench.h"
+#include "core/tessellate.h"
+
+namespace rtbench {
+
+rt::TriangleMesh flatten(const rt::Scene& scene) {
+    rt::TriangleMesh out;
+    const auto add = [&](const rt::TriangleMesh& mesh, const glm::mat4& m) {
+        const auto base = static_cast<std::uint32_t>(out.positions.size());
+        for (const vec3& p : mesh.positions) out.positions.push_back(vec3(m * glm::vec4(p, 1.0f)));
+        for (const glm::uvec3& t : mesh.triangles) out.triangles.push_back(t + glm::uvec3(base));
+    };
+    const rt::TriangleMesh sphere = rt::tessellate_unit_sphere(96);
+    for (const rt::Object& o : scene.objects) {
+        const glm::mat4 m = o.transform ? o.transform->m : glm::mat4(1.0f);
+        if (const auto* mesh = std::get_if<rt::MeshRef>(&o.shape)) {
+            add(scene.meshes[mesh->mesh], m);
+        } else if (const auto* s = std::get_if<rt::Sphere>(&o.shape)) {
+            add(sphere, m * glm::scale(glm::translate(glm::mat4(1.0f), s->centre), vec3(s->radius)));
+        } else if (const auto* t = std::get_if<rt::Triangle>(&o.shape)) {
+            rt::TriangleMesh one;
+            one.positions = {t->a, t->b, t->c};
+            one.triangles = {{0, 1, 2}};
+            add(one, m);
+        }
+    }
+    return out;
+}
+
+namespace {
+
+// A small counter-based generator: the same numbers for the same ray index, always.
+float hash01(std::uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return static_cast<float>(x >> 8) / 16777216.0f;
+}
+
+vec3 cosine_direction(const vec3& n, std::uint32_t index) {
+    const float u1 = hash01(2 * index + 1), u2 = hash01(2 * index + 2);
+    const float r = std::sqrt(u1), phi = 6.2831853f * u2;
+    vec3 t1, t2;
+    rt::tangent_frame(n, t1, t2);
+    return r * std::cos(phi) * t1 + r * std::sin(phi) * t2 + std::sqrt(std::max(0.0f, 1.0f - u1)) * n;
+}
+
+}  // namespace
+
+std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMesh& mesh,
+                                  const std::vector<rt::Light>& lights, const std::vector<Result>& primary_hits) {
+    std::vector<RaySet> sets(3);
+    sets[0].name = "primary";
+    sets[1].name = "shadow";
+    sets[1].occlusion = true;
+    sets[2].name = "secondary";
+    for (int y = 0; y < camera.rows; ++y)
+        for (int x = 0; x < camera.cols; ++x) {
+            sets[0].rays.push_back(camera.ray(x, y));
+            sets[0].t_max.push_back(rt::kInfinity);
+        }
+    for (std::size_t i = 0; i < primary_hits.size(); ++i) {
+        const Result& h = primary_hits[i];
+        if (!h.hit()) continue;
+        const rt::Ray& r = sets[0].rays[i];
+        vec3 n = glm::normalize(mesh.face_normal(h.prim));
+        if (glm::dot(n, r.dir) > 0.0f) n = -n;
+        const vec3 p = rt::offset_ray_origin(r.at(h.t), n);
+        for (const rt::Light& light : lights) {
+            vec3 dir;
+            const float t_max = light.feeler(p, dir);
+            sets[1].rays.push_back({p, dir});
+            sets[1].t_max.push_back(t_max);
+        }
+        sets[2].rays.push_back({p, cosine_direction(n, static_cast<std::uint32_t>(i))});
+        sets[2].t_max.push_back(rt::kInfinity);
+    }
+    return sets;
+}
+
+void parallel_for(std::size_t count, int threads, const std::function<void(std::size_t, std::size_t)>& body) {
+    constexpr std::size_t kChunk = 4096;
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t begin; (begin = next.fetch_add(kChunk)) < count;) body(begin, std::min(count, begin + kChunk));
+    };
+    std::vector<std::jthread> pool;
+    for (int i = 1; i < threads; ++i) pool.emplace_back(work);
+    work();
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+namespace {
+
+class Ours : public Structure {
+public:
+    explicit Ours(rt::AccelKind kind) : kind_(kind) {}
+    std::string name() const override { return rt::accel_name(kind_); }
+    void prepare(const rt::TriangleMesh& mesh) override { mesh_ = mesh; }
+    void build() override { mesh_.build(kind_); }
+    std::size_t memory_bytes() const override { return mesh_.accel_memory_bytes(); }
+    Result intersect(const rt::Ray& ray, float t_max) const override {
+        rt::Hit hit;
+        hit.t = t_max;
+        if (!mesh_.intersect(ray, hit)) return {};
+        return {hit.t, hit.prim};
+    }
+    bool occluded(const rt::Ray& ray, float t_max) const override { return mesh_.occluded(ray, t_max); }
+
+private:
+    rt::AccelKind kind_;
+    rt::TriangleMesh mesh_;
+};
+
+}  // namespace
+
+std::unique_ptr<Structure> make_ours(rt::AccelKind kind) { return std::make_unique<Ours>(kind); }
+
+}  // namespace rtbench

@@ -1,0 +1,85 @@
+#include "app/bench/measure.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+
+namespace rtbench {
+
+namespace {
+
+// RTBENCH_FAULT=NAME makes structure NAME drop every 50th hit: the way to see that the
+// answer check can fail (tests/cli/rtbench.sh uses it).
+bool faulty(const Structure& s) {
+    const char* name = std::getenv("RTBENCH_FAULT");
+    return name && s.name() == name;
+}
+
+}  // namespace
+
+SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride, const MeasureOptions& options,
+                   std::vector<Result>& answers) {
+    const std::size_t count = (set.rays.size() + stride - 1) / stride;
+    answers.assign(count, Result{});
+    const auto pass = [&] {
+        parallel_for(count, options.threads, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const std::size_t r = i * stride;
+                if (set.occlusion) {
+                    answers[i].t = s.occluded(set.rays[r], set.t_max[r]) ? 0.0f : rt::kInfinity;
+                } else {
+                    answers[i] = s.intersect(set.rays[r], set.t_max[r]);
+                }
+            }
+        });
+    };
+    pass();  // warm-up: caches, page faults, thread start
+    if (faulty(s))
+        for (std::size_t i = 0; i < answers.size(); i += 50) answers[i] = Result{};
+    std::vector<double> seconds;
+    const int repeats = stride > 1 ? std::max(1, options.repeats / 2) : options.repeats;
+    for (int k = 0; k < repeats; ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        pass();
+        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    if (faulty(s))
+        for (std::size_t i = 0; i < answers.size(); i += 50) answers[i] = Result{};
+    SetTiming t;
+    t.seconds = median(seconds);
+    t.rays = count;
+    t.stride = stride;
+    t.mrays_per_s = t.seconds > 0.0 ? static_cast<double>(count) / t.seconds * 1e-6 : 0.0;
+    return t;
+}
+
+Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::size_t stride,
+                   const std::vector<Result>& reference, std::size_t ref_stride) {
+    Mismatches m;
+    for (std::size_t i = 0; i < answers.size(); ++i) {
+        const std::size_t ray = i * stride;
+        if (ray % ref_stride != 0) continue;
+        const Result& a = answers[i];
+        const Result& r = reference[ray / ref_stride];
+        ++m.checked;
+        if (a.hit() != r.hit()) {
+            ++m.hit_miss;
+        } else if (a.hit() && !set.occlusion) {
+            const float tolerance = 1e-4f * std::max(r.t, 1e-3f);
+            const bool same_t = std::fabs(a.t - r.t) <= tolerance;
+            // Two triangles may meet the ray at one t (a shared edge): either is right.
+            if (!same_t || (a.prim != r.prim && std::fabs(a.t - r.t) > 1e-6f * r.t)) ++m.wrong_hit;
+        }
+    }
+    return m;
+}
+
+nlohmann::json to_json(const SetTiming& t) {
+    return {{"mrays_per_s", t.mrays_per_s}, {"seconds", t.seconds}, {"rays", t.rays}, {"stride", t.stride}};
+}
+
+nlohmann::json to_json(const Mismatches& m) {
+    return {{"checked", m.checked}, {"hit_miss", m.hit_miss}, {"wrong_hit", m.wrong_hit}, {"ok", m.ok()}};
+}
+
+}  // namespace rtbench

@@ -1,0 +1,44 @@
+#pragma once
+// Timing structures on ray sets, and checking their answers against a reference.
+
+#include <nlohmann/json.hpp>
+
+#include "app/bench/bench.h"
+
+namespace rtbench {
+
+struct MeasureOptions {
+    int threads = 2;
+    int repeats = 5;
+    int build_repeats = 3;
+    double brute_budget = 4e8;  // triangle tests per pass: brute force traces a subset of rays
+};
+
+struct SetTiming {
+    double mrays_per_s = 0.0;
+    double seconds = 0.0;  // median pass
+    std::size_t rays = 0;  // traced per pass
+    std::size_t stride = 1;  // 1: every ray; k: every k-th (brute force)
+};
+
+struct Mismatches {
+    std::size_t checked = 0;
+    std::size_t hit_miss = 0;   // one found a hit, the other did not
+    std::size_t wrong_hit = 0;  // another primitive at another t
+    std::size_t allowed() const { return std::max<std::size_t>(2, checked / 100000); }
+    bool ok() const { return hit_miss + wrong_hit <= allowed(); }
+};
+
+// Traces every ray of `set` (or every stride-th) through `s`, after a warm-up pass,
+// `repeats` times; returns the median, and the answers of the last pass.
+SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride, const MeasureOptions& options,
+                   std::vector<Result>& answers);
+
+// Compares answers[i] (for rays i * stride) with reference[i * ref_stride ...].
+Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::size_t stride,
+                   const std::vector<Result>& reference, std::size_t ref_stride);
+
+nlohmann::json to_json(const SetTiming& t);
+nlohmann::json to_json(const Mismatches& m);
+
+}  // namespace rtbench

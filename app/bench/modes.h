@@ -1,0 +1,40 @@
+#pragma once
+// rtbench's three modes.
+
+#include <string>
+
+#include "app/bench/measure.h"
+
+namespace rtbench {
+
+struct SceneBenchOptions {
+    std::string scene;
+    std::vector<std::string> only;  // structures to run (empty: all); bvh is always built, for the rays
+    std::string json;  // empty: no JSON
+    int width = 1280, height = 720;
+    MeasureOptions measure;
+};
+
+// Every structure on the scene's triangles; exit status 1 on a wrong answer.
+int run_scene(const SceneBenchOptions& options);
+
+struct SweepOptions {
+    std::string csv = "sweep.csv";
+    std::string png = "sweep.png";
+    int width = 320, height = 180;
+    std::vector<int> triangle_counts{1000, 10000, 100000, 1000000};
+    MeasureOptions measure;
+};
+int run_sweep(const SweepOptions& options);
+
+struct ItemBufferBenchOptions {
+    std::string scene;
+    std::string json;
+    int width = 1280, height = 720;
+    int threads = 2;
+    int repeats = 5;
+    std::string gl = "auto";
+};
+int run_item_buffer(const ItemBufferBenchOptions& options);
+
+}  // namespace rtbench

@@ -1,0 +1,77 @@
+// rtbench --sweep: time per ray against triangle count, on a tessellated sphere.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
+#include <glm/geometric.hpp>
+
+#include "app/bench/modes.h"
+#include "core/error.h"
+#include "core/tessellate.h"
+
+namespace rtbench {
+namespace {
+
+// slices s, stacks s/2: s * s - 2 s triangles.
+int slices_for(int triangles) { return static_cast<int>(std::lround(1.0 + std::sqrt(1.0 + triangles))); }
+
+void write_plot(const SweepOptions& o) {
+    const std::string script = o.png + ".gnuplot";
+    std::ofstream gp(script);
+    gp << "set terminal pngcairo size 900,600 font ',11'\n"
+       << "set output '" << o.png << "'\n"
+       << "set title 'rtbench --sweep: primary rays on a tessellated sphere'\n"
+       << "set logscale xy\nset xlabel 'triangles'\nset ylabel 'nanoseconds per ray (2 threads)'\nset grid\n"
+       << "set key left top\nset datafile separator ','\n"
+       << "plot for [s in 'brute grid bvh embree'] '" << o.csv
+       << "' using 1:(stringcolumn(2) eq s ? $3 : NaN) with linespoints lw 2 title s\n";
+    gp.close();
+    if (std::system(("gnuplot " + script + " 2>/dev/null").c_str()) == 0)
+        std::printf("plot: %s\n", o.png.c_str());
+    else
+        std::printf("no plot: gnuplot is missing or failed (the CSV is there)\n");
+}
+
+}  // namespace
+
+int run_sweep(const SweepOptions& o) {
+    std::ofstream csv(o.csv);
+    if (!csv) throw rt::Error(o.csv, "csv", "cannot write the file");
+    csv << "triangles,structure,ns_per_ray,build_seconds,memory_bytes\n";
+    std::printf("%10s %-8s %12s %10s\n", "triangles", "", "ns/ray", "build s");
+    for (int wanted : o.triangle_counts) {
+        const rt::TriangleMesh sphere = rt::tessellate_unit_sphere(slices_for(wanted));
+        const rt::Camera camera = rt::Camera::look_at({0.3f, 0.4f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 45.0f, o.width, o.height);
+        RaySet primary{"primary", {}, {}, false};
+        for (int y = 0; y < camera.rows; ++y)
+            for (int x = 0; x < camera.cols; ++x) {
+                primary.rays.push_back(camera.ray(x, y));
+                primary.t_max.push_back(rt::kInfinity);
+            }
+        std::vector<std::unique_ptr<Structure>> structures;
+        for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh}) structures.push_back(make_ours(k));
+        if (auto embree = make_embree(o.measure.threads)) structures.push_back(std::move(embree));
+        for (auto& s : structures) {
+            s->prepare(sphere);
+            const auto start = std::chrono::steady_clock::now();
+            s->build();
+            const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double tests = static_cast<double>(primary.rays.size()) * static_cast<double>(sphere.triangles.size());
+            const std::size_t stride =
+                s->name() == "brute" ? std::max<std::size_t>(1, static_cast<std::size_t>(tests / o.measure.brute_budget)) : 1;
+            std::vector<Result> answers;
+            const SetTiming t = time_set(*s, primary, stride, o.measure, answers);
+            const double ns = 1e9 * t.seconds / static_cast<double>(t.rays);
+            csv << sphere.triangles.size() << ',' << s->name() << ',' << ns << ',' << build << ',' << s->memory_bytes() << '\n';
+            std::printf("%10zu %-8s %12.1f %10.4f\n", sphere.triangles.size(), s->name().c_str(), ns, build);
+        }
+    }
+    csv.close();
+    std::printf("data: %s\n", o.csv.c_str());
+    write_plot(o);
+    return 0;
+}
+
+}  // namespace rtbench

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# rtbench runs every structure and checks their answers (and fails on a wrong one),
+# sweeps triangle counts into a CSV and a plot, and measures the item buffer.
+#   rtbench.sh RTBENCH ASSETS_DIR OUT_DIR
+set -u
+rtbench=$1 assets=$2 out=$3
+rm -rf "$out" && mkdir -p "$out"
+failures=0 cases=0
+check() { cases=$((cases + 1)); local what=$1; shift; if "$@"; then echo "ok   $what"; else echo "FAIL $what"; failures=$((failures + 1)); fi; }
+
+"$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --json "$out/teapot.json" >"$out/teapot.log" 2>&1
+check "structures agree on the teapot (exit 0)" test $? -eq 0
+check "  ... and say so" grep -q "every structure agrees" "$out/teapot.log"
+for key in brute grid bvh build_seconds memory_bytes primary shadow secondary mrays_per_s checks; do
+    check "  ... JSON has \"$key\"" grep -q "\"$key\"" "$out/teapot.json"
+done
+RTBENCH_FAULT=grid "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only grid,brute >"$out/fault.log" 2>&1
+check "a structure giving wrong answers makes rtbench fail (exit 1)" test $? -eq 1
+check "  ... naming it" grep -q "WRONG: grid" "$out/fault.log"
+
+"$rtbench" --sweep --counts 200,2000 --repeats 1 --csv "$out/sweep.csv" --png "$out/sweep.png" >"$out/sweep.log" 2>&1
+check "sweep runs" test $? -eq 0
+check "  ... and writes a row per count and structure" test "$(grep -c '^[0-9]' "$out/sweep.csv")" -ge 6
+check "  ... and a plot" test -s "$out/sweep.png"
+
+"$rtbench" --item-buffer "$assets/scenes/tutorial.json" --size 160x120 --repeats 1 >"$out/ib.log" 2>&1
+check "item-buffer demo runs (exit 0: images agree)" test $? -eq 0
+check "  ... and reports the net effect" grep -q "net on the frame" "$out/ib.log"
+
+"$rtbench" "$out/none.obj" >"$out/bad.log" 2>&1
+check "a missing file: exit 1, one line" test $? -eq 1 -a "$(wc -l <"$out/bad.log")" -eq 1
+
+echo "$((cases - failures)) passed, $failures failed"
+[ "$failures" -eq 0 ]
