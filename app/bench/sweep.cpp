@@ -1,4 +1,5 @@
 // rtbench --sweep: time per ray against triangle count, on a tessellated sphere.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,16 +18,34 @@ namespace {
 // slices s, stacks s/2: s * s - 2 s triangles.
 int slices_for(int triangles) { return static_cast<int>(std::lround(1.0 + std::sqrt(1.0 + triangles))); }
 
-void write_plot(const SweepOptions& o) {
-    const std::string script = o.png + ".gnuplot";
+struct Row {
+    std::size_t triangles;
+    std::string structure;
+    double ns_per_ray;
+};
+
+void write_plot(const SweepOptions& o, const std::vector<Row>& rows) {
+    // gnuplot wants one block per line: the rows grouped by structure.
+    const std::string data = o.png + ".dat", script = o.png + ".gnuplot";
+    std::vector<std::string> names;
+    for (const Row& r : rows)
+        if (std::find(names.begin(), names.end(), r.structure) == names.end()) names.push_back(r.structure);
+    std::ofstream dat(data);
+    for (const std::string& name : names) {
+        dat << "\"" << name << "\"\n";
+        for (const Row& r : rows)
+            if (r.structure == name) dat << r.triangles << ' ' << r.ns_per_ray << '\n';
+        dat << "\n\n";
+    }
+    dat.close();
     std::ofstream gp(script);
     gp << "set terminal pngcairo size 900,600 font ',11'\n"
        << "set output '" << o.png << "'\n"
        << "set title 'rtbench --sweep: primary rays on a tessellated sphere'\n"
        << "set logscale xy\nset xlabel 'triangles'\nset ylabel 'nanoseconds per ray (2 threads)'\nset grid\n"
-       << "set key left top\nset datafile separator ','\n"
-       << "plot for [s in 'brute grid bvh embree'] '" << o.csv
-       << "' using 1:(stringcolumn(2) eq s ? $3 : NaN) with linespoints lw 2 title s\n";
+       << "set key left top\n"
+       << "plot for [i=0:" << names.size() - 1 << "] '" << data
+       << "' index i using 1:2 with linespoints lw 2 title columnheader(1)\n";
     gp.close();
     if (std::system(("gnuplot " + script + " 2>/dev/null").c_str()) == 0)
         std::printf("plot: %s\n", o.png.c_str());
@@ -41,6 +60,7 @@ int run_sweep(const SweepOptions& o) {
     if (!csv) throw rt::Error(o.csv, "csv", "cannot write the file");
     csv << "triangles,structure,ns_per_ray,build_seconds,memory_bytes\n";
     std::printf("%10s %-8s %12s %10s\n", "triangles", "", "ns/ray", "build s");
+    std::vector<Row> rows;
     for (int wanted : o.triangle_counts) {
         const rt::TriangleMesh sphere = rt::tessellate_unit_sphere(slices_for(wanted));
         const rt::Camera camera = rt::Camera::look_at({0.3f, 0.4f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 45.0f, o.width, o.height);
@@ -64,13 +84,14 @@ int run_sweep(const SweepOptions& o) {
             std::vector<Result> answers;
             const SetTiming t = time_set(*s, primary, stride, o.measure, answers);
             const double ns = 1e9 * t.seconds / static_cast<double>(t.rays);
+            rows.push_back({sphere.triangles.size(), s->name(), ns});
             csv << sphere.triangles.size() << ',' << s->name() << ',' << ns << ',' << build << ',' << s->memory_bytes() << '\n';
             std::printf("%10zu %-8s %12.1f %10.4f\n", sphere.triangles.size(), s->name().c_str(), ns, build);
         }
     }
     csv.close();
     std::printf("data: %s\n", o.csv.c_str());
-    write_plot(o);
+    write_plot(o, rows);
     return 0;
 }
 
