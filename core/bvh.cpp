@@ -9,7 +9,7 @@ namespace {
 
 constexpr int kBins = 16;
 constexpr std::uint32_t kMaxLeafSize = 2;
-constexpr float kTraversalCost = 1.0f;          // relative to one primitive test
+constexpr float kTraversalCost = 1.0f;         // relative to one primitive test
 constexpr std::uint32_t kParallelMin = 20000;  // subtrees smaller than this are built in place
 
 struct Split {
@@ -31,7 +31,8 @@ struct Builder {
     // where the centroids spread most: one pass bins them, a sweep finds the cheapest split.
     Split find_split(std::uint32_t begin, std::uint32_t end, const Aabb& centre_box) const {
         const vec3 extent = centre_box.extent();
-        const int axis = extent.x >= extent.y ? (extent.x >= extent.z ? 0 : 2) : (extent.y >= extent.z ? 1 : 2);
+        const int axis =
+            extent.x >= extent.y ? (extent.x >= extent.z ? 0 : 2) : (extent.y >= extent.z ? 1 : 2);
         if (!(extent[axis] > 0.0f)) return {};
         const float lo = centre_box.lo[axis], scale = static_cast<float>(kBins) / extent[axis];
         std::array<Aabb, kBins> bin_box{};
@@ -64,10 +65,12 @@ struct Builder {
     }
 
     std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const Split& split) {
-        const auto middle = std::partition(prims.begin() + begin, prims.begin() + end,
-                                           [&](std::uint32_t p) { return centres[p][split.axis] < split.position; });
+        const auto middle = std::partition(
+            prims.begin() + begin, prims.begin() + end,
+            [&](std::uint32_t p) { return centres[p][split.axis] < split.position; });
         const auto mid = static_cast<std::uint32_t>(middle - prims.begin());
-        return mid == begin || mid == end ? begin + (end - begin) / 2 : mid;  // rounding put all on one side
+        return mid == begin || mid == end ? begin + (end - begin) / 2
+                                          : mid;  // rounding put all on one side
     }
 
     void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth) {
@@ -86,20 +89,23 @@ struct Builder {
         if (count <= 2 || depth >= Bvh::kMaxDepth) return leaf();
         const Split split = find_split(begin, end, centre_box);
         const float leaf_cost = box.half_area() * static_cast<float>(count);
-        if (split.axis < 0 || (kTraversalCost * box.half_area() + split.cost >= leaf_cost && count <= kMaxLeafSize))
+        if (split.axis < 0 ||
+            (kTraversalCost * box.half_area() + split.cost >= leaf_cost && count <= kMaxLeafSize))
             return leaf();
         const std::uint32_t mid = partition(begin, end, split);
 
         // The right subtree on another thread while this one builds the left.
         std::future<std::vector<BvhNode>> right_nodes;
         if (parallel_depth > 0 && end - mid >= kParallelMin) {
-            right_nodes = std::async(std::launch::async, [this, mid, end, depth] {
-                Builder right{boxes, centres, prims, {}, parallel_depth - 1};
-                right.nodes.reserve(2 * (end - mid));
-                right.nodes.emplace_back();
-                right.build(0, mid, end, depth + 1);
-                return std::move(right.nodes);
-            });
+            // Captured by value: this builder goes on changing parallel_depth meanwhile.
+            right_nodes = std::async(std::launch::async,
+                                     [this, mid, end, depth, levels = parallel_depth - 1] {
+                                         Builder right{boxes, centres, prims, {}, levels};
+                                         right.nodes.reserve(2 * (end - mid));
+                                         right.nodes.emplace_back();
+                                         right.build(0, mid, end, depth + 1);
+                                         return std::move(right.nodes);
+                                     });
         }
         const auto left = static_cast<std::uint32_t>(nodes.size());
         nodes.emplace_back();
@@ -124,7 +130,9 @@ struct Builder {
 
 int parallel_levels() {
     int levels = 0;
-    for (unsigned threads = std::max(1u, std::thread::hardware_concurrency()); threads > 1; threads /= 2) ++levels;
+    for (unsigned threads = std::max(1u, std::thread::hardware_concurrency()); threads > 1;
+         threads /= 2)
+        ++levels;
     return levels;
 }
 

@@ -9,6 +9,8 @@ template <class... F>
 struct Overloaded : F... {
     using F::operator()...;
 };
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;  // clang 14 does not deduce aggregates by itself
 
 // Object-space hit test of one shape; updates hit.t (and prim, b1, b2) on a closer hit.
 bool intersect_shape(const Scene& scene, const Shape& shape, const Ray& r, Hit& hit) {
@@ -76,7 +78,8 @@ void Scene::build(AccelKind kind) {
     }
     top_.build(boxes, kind);
     std::vector<std::uint32_t> by_slot(bounded_.size());  // bounded_ is kept in slot order
-    for (std::size_t slot = 0; slot < by_slot.size(); ++slot) by_slot[slot] = bounded_[top_.order()[slot]];
+    for (std::size_t slot = 0; slot < by_slot.size(); ++slot)
+        by_slot[slot] = bounded_[top_.order()[slot]];
     bounded_ = std::move(by_slot);
 }
 

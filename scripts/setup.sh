@@ -17,6 +17,7 @@ packages=(
   libglfw3-dev libimgui-dev libglx-mesa0  # the viewer: window, panel, GLX on Mesa
   xvfb xdotool imagemagick            # the viewer's tests: X server, input, screen grabs
   libembree-dev gnuplot-nox           # rtbench: the reference BVH, and its plots
+  clang libclang-rt-14-dev            # libFuzzer targets (scripts/fuzz.sh)
 )
 
 missing=()

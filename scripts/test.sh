@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Set up, build with warnings as errors, and run the whole test suite: unit, GL
 # (EGL and OSMesa), screenshot, command-line and GUI (Xvfb) tests. Then the headless
-# configuration (no GLFW, no X11, no viewer) is built and its tests run too.
+# configuration (no GLFW, no X11, no viewer) is built and its tests run too, then the
+# suite under AddressSanitizer/UBSan and ThreadSanitizer, then each fuzzer for 30 s.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -14,4 +15,9 @@ echo "== headless configuration (-DRTVIEW_BUILD_VIEWER=OFF)"
 cmake -S . -B build-headless -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTVIEW_WERROR=ON -DRTVIEW_BUILD_VIEWER=OFF >/dev/null
 cmake --build build-headless
 ctest --test-dir build-headless --output-on-failure -j "$(nproc)" || status=$?
+
+echo "== sanitizers"
+scripts/sanitize.sh || status=1
+echo "== fuzzing"
+scripts/fuzz.sh 30 || status=1
 exit $status

@@ -38,14 +38,15 @@ struct Result {  // of one ray
 // incoherent secondary rays, cosine-distributed about the hit normals (seeded, so every
 // run and every structure gets the same rays).
 std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMesh& mesh,
-                                  const std::vector<rt::Light>& lights, const std::vector<Result>& primary_hits);
+                                  const std::vector<rt::Light>& lights,
+                                  const std::vector<Result>& primary_hits);
 
 class Structure {
-public:
+  public:
     virtual ~Structure() = default;
     virtual std::string name() const = 0;
     virtual void prepare(const rt::TriangleMesh& mesh) = 0;  // copies the triangles in: not timed
-    virtual void build() = 0;                               // the structure itself: timed
+    virtual void build() = 0;                                // the structure itself: timed
     virtual std::size_t memory_bytes() const = 0;
     virtual Result intersect(const rt::Ray& ray, float t_max) const = 0;
     virtual bool occluded(const rt::Ray& ray, float t_max) const = 0;
@@ -56,7 +57,8 @@ std::unique_ptr<Structure> make_embree(int threads);  // nullptr when built with
 bool have_embree();
 
 // Runs body(begin, end) over [0, count) in chunks on `threads` threads.
-void parallel_for(std::size_t count, int threads, const std::function<void(std::size_t, std::size_t)>& body);
+void parallel_for(std::size_t count, int threads,
+                  const std::function<void(std::size_t, std::size_t)>& body);
 
 double median(std::vector<double> values);
 

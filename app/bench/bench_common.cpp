@@ -24,7 +24,8 @@ rt::TriangleMesh flatten(const rt::Scene& scene) {
         if (const auto* mesh = std::get_if<rt::MeshRef>(&o.shape)) {
             add(scene.meshes[mesh->mesh], m);
         } else if (const auto* s = std::get_if<rt::Sphere>(&o.shape)) {
-            add(sphere, m * glm::scale(glm::translate(glm::mat4(1.0f), s->centre), vec3(s->radius)));
+            add(sphere,
+                m * glm::scale(glm::translate(glm::mat4(1.0f), s->centre), vec3(s->radius)));
         } else if (const auto* t = std::get_if<rt::Triangle>(&o.shape)) {
             rt::TriangleMesh one;
             one.positions = {t->a, t->b, t->c};
@@ -52,13 +53,15 @@ vec3 cosine_direction(const vec3& n, std::uint32_t index) {
     const float r = std::sqrt(u1), phi = 6.2831853f * u2;
     vec3 t1, t2;
     rt::tangent_frame(n, t1, t2);
-    return r * std::cos(phi) * t1 + r * std::sin(phi) * t2 + std::sqrt(std::max(0.0f, 1.0f - u1)) * n;
+    return r * std::cos(phi) * t1 + r * std::sin(phi) * t2 +
+           std::sqrt(std::max(0.0f, 1.0f - u1)) * n;
 }
 
 }  // namespace
 
 std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMesh& mesh,
-                                  const std::vector<rt::Light>& lights, const std::vector<Result>& primary_hits) {
+                                  const std::vector<rt::Light>& lights,
+                                  const std::vector<Result>& primary_hits) {
     std::vector<RaySet> sets(3);
     sets[0].name = "primary";
     sets[1].name = "shadow";
@@ -88,11 +91,13 @@ std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMe
     return sets;
 }
 
-void parallel_for(std::size_t count, int threads, const std::function<void(std::size_t, std::size_t)>& body) {
+void parallel_for(std::size_t count, int threads,
+                  const std::function<void(std::size_t, std::size_t)>& body) {
     constexpr std::size_t kChunk = 4096;
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
-        for (std::size_t begin; (begin = next.fetch_add(kChunk)) < count;) body(begin, std::min(count, begin + kChunk));
+        for (std::size_t begin; (begin = next.fetch_add(kChunk)) < count;)
+            body(begin, std::min(count, begin + kChunk));
     };
     std::vector<std::jthread> pool;
     for (int i = 1; i < threads; ++i) pool.emplace_back(work);
@@ -109,7 +114,7 @@ double median(std::vector<double> values) {
 namespace {
 
 class Ours : public Structure {
-public:
+  public:
     explicit Ours(rt::AccelKind kind) : kind_(kind) {}
     std::string name() const override { return rt::accel_name(kind_); }
     void prepare(const rt::TriangleMesh& mesh) override { mesh_ = mesh; }
@@ -121,9 +126,11 @@ public:
         if (!mesh_.intersect(ray, hit)) return {};
         return {hit.t, hit.prim};
     }
-    bool occluded(const rt::Ray& ray, float t_max) const override { return mesh_.occluded(ray, t_max); }
+    bool occluded(const rt::Ray& ray, float t_max) const override {
+        return mesh_.occluded(ray, t_max);
+    }
 
-private:
+  private:
     rt::AccelKind kind_;
     rt::TriangleMesh mesh_;
 };

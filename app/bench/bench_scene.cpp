@@ -29,7 +29,8 @@ double time_build(Structure& s, const rt::TriangleMesh& mesh, int repeats) {
         s.prepare(mesh);
         const auto start = std::chrono::steady_clock::now();
         s.build();
-        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        seconds.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     return median(seconds);
 }
@@ -46,7 +47,8 @@ RaySet primary_rays(const rt::Camera& camera) {
 
 // Each structure against the reference: Embree on every ray if there is one, and brute
 // force on the rays brute force traced. A mismatch beyond a handful of edge cases fails.
-bool check(const std::vector<Entry>& entries, const std::vector<RaySet>& sets, nlohmann::json& report) {
+bool check(const std::vector<Entry>& entries, const std::vector<RaySet>& sets,
+           nlohmann::json& report) {
     bool ok = true;
     const Entry* brute = nullptr;
     const Entry* embree = nullptr;
@@ -59,12 +61,16 @@ bool check(const std::vector<Entry>& entries, const std::vector<RaySet>& sets, n
             const std::string name = e.structure->name() + "." + sets[s].name;
             const auto against = [&](const Entry& ref, const char* label) {
                 if (&ref == &e) return;
-                const Mismatches m = compare(sets[s], e.answers[s], e.timing[s].stride, ref.answers[s], ref.timing[s].stride);
+                const Mismatches m = compare(sets[s], e.answers[s], e.timing[s].stride,
+                                             ref.answers[s], ref.timing[s].stride);
                 report["checks"][name][label] = to_json(m);
                 if (!m.ok()) {
                     ok = false;
-                    std::printf("WRONG: %s differs from %s on %zu of %zu rays (%zu hit/miss, %zu other hit)\n", name.c_str(),
-                                label, m.hit_miss + m.wrong_hit, m.checked, m.hit_miss, m.wrong_hit);
+                    std::printf(
+                        "WRONG: %s differs from %s on %zu of %zu rays (%zu hit/miss, %zu other "
+                        "hit)\n",
+                        name.c_str(), label, m.hit_miss + m.wrong_hit, m.checked, m.hit_miss,
+                        m.wrong_hit);
                 }
             };
             if (brute) against(*brute, "brute");
@@ -74,8 +80,8 @@ bool check(const std::vector<Entry>& entries, const std::vector<RaySet>& sets, n
     return ok;
 }
 
-void print_table(const std::vector<Entry>& entries, const std::vector<RaySet>& sets, std::size_t triangles,
-                 nlohmann::json& report) {
+void print_table(const std::vector<Entry>& entries, const std::vector<RaySet>& sets,
+                 std::size_t triangles, nlohmann::json& report) {
     const Entry* embree = nullptr;
     for (const Entry& e : entries)
         if (e.structure->name() == "embree") embree = &e;
@@ -83,15 +89,17 @@ void print_table(const std::vector<Entry>& entries, const std::vector<RaySet>& s
     for (const RaySet& set : sets) std::printf(" %10s Mrays/s", set.name.c_str());
     std::printf("\n");
     for (const Entry& e : entries) {
-        nlohmann::json j = {{"build_seconds", e.build_seconds},
-                            {"build_mtris_per_s", static_cast<double>(triangles) / e.build_seconds * 1e-6},
-                            {"memory_bytes", e.structure->memory_bytes()}};
+        nlohmann::json j = {
+            {"build_seconds", e.build_seconds},
+            {"build_mtris_per_s", static_cast<double>(triangles) / e.build_seconds * 1e-6},
+            {"memory_bytes", e.structure->memory_bytes()}};
         std::printf("%-8s %10.4f %12.2f %11.2f", e.structure->name().c_str(), e.build_seconds,
                     static_cast<double>(triangles) / e.build_seconds * 1e-6,
                     static_cast<double>(e.structure->memory_bytes()) / 1e6);
         for (std::size_t s = 0; s < sets.size(); ++s) {
             j["rays"][sets[s].name] = to_json(e.timing[s]);
-            const double ratio = embree ? embree->timing[s].mrays_per_s / e.timing[s].mrays_per_s : 0.0;
+            const double ratio =
+                embree ? embree->timing[s].mrays_per_s / e.timing[s].mrays_per_s : 0.0;
             if (embree) j["rays"][sets[s].name]["embree_time_ratio"] = ratio;
             std::printf(" %18.2f", e.timing[s].mrays_per_s);
             if (embree && &e != embree) std::printf(" (%4.2fx)", ratio);
@@ -100,7 +108,8 @@ void print_table(const std::vector<Entry>& entries, const std::vector<RaySet>& s
         std::printf("\n");
         report["structures"][e.structure->name()] = j;
     }
-    if (embree) std::printf("(N.NNx): time per ray relative to Embree's, on the same rays and threads\n");
+    if (embree)
+        std::printf("(N.NNx): time per ray relative to Embree's, on the same rays and threads\n");
 }
 
 // "sphere:N": a unit sphere tessellated into about N triangles, seen from the front and
@@ -113,10 +122,12 @@ rt::LoadedScene load(const std::string& name) {
     if (ec != std::errc{} || *end != '\0' || wanted < 8 || wanted > 50000000)
         throw rt::Error(name, "sphere", "expected sphere:N with N from 8 to 50000000 triangles");
     rt::LoadedScene out;
-    const int slices = static_cast<int>(std::lround(1.0 + std::sqrt(1.0 + static_cast<double>(wanted))));
+    const int slices =
+        static_cast<int>(std::lround(1.0 + std::sqrt(1.0 + static_cast<double>(wanted))));
     out.scene.meshes.push_back(rt::tessellate_unit_sphere(slices));
     out.scene.objects.push_back(rt::Object{"sphere", rt::MeshRef{0, true}, 0, std::nullopt});
-    out.scene.camera = rt::Camera::look_at({0.3f, 0.4f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 45.0f, 1280, 720);
+    out.scene.camera =
+        rt::Camera::look_at({0.3f, 0.4f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 45.0f, 1280, 720);
     out.scene.lights.push_back(rt::Light{rt::Light::Type::kPoint, {3, 5, 4}, {}, rt::vec3(1.0f)});
     return out;
 }
@@ -126,11 +137,14 @@ rt::LoadedScene load(const std::string& name) {
 int run_scene(const SceneBenchOptions& o) {
     rt::LoadedScene loaded = load(o.scene);
     const rt::TriangleMesh mesh = flatten(loaded.scene);
-    if (mesh.triangles.empty()) throw rt::Error(o.scene, "triangles", "the scene has no triangles to benchmark");
+    if (mesh.triangles.empty())
+        throw rt::Error(o.scene, "triangles", "the scene has no triangles to benchmark");
     const rt::Camera camera = loaded.scene.camera.resized(o.width, o.height);
-    std::printf("%s: %zu triangles, %dx%d camera, %zu lights, %d threads, median of %d passes after a warm-up%s\n",
-                o.scene.c_str(), mesh.triangles.size(), o.width, o.height, loaded.scene.lights.size(),
-                o.measure.threads, o.measure.repeats, have_embree() ? "" : " (built without Embree)");
+    std::printf(
+        "%s: %zu triangles, %dx%d camera, %zu lights, %d threads, median of %d passes after a "
+        "warm-up%s\n",
+        o.scene.c_str(), mesh.triangles.size(), o.width, o.height, loaded.scene.lights.size(),
+        o.measure.threads, o.measure.repeats, have_embree() ? "" : " (built without Embree)");
 
     std::vector<Entry> entries;
     for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh})
@@ -138,36 +152,47 @@ int run_scene(const SceneBenchOptions& o) {
     if (auto embree = make_embree(o.measure.threads)) entries.emplace_back(std::move(embree));
     const auto wanted = [&](const Entry& e) {
         const std::string name = e.structure->name();
-        return o.only.empty() || name == "bvh" || std::find(o.only.begin(), o.only.end(), name) != o.only.end();
+        return o.only.empty() || name == "bvh" ||
+               std::find(o.only.begin(), o.only.end(), name) != o.only.end();
     };
     std::erase_if(entries, [&](const Entry& e) { return !wanted(e); });
-    for (Entry& e : entries) e.build_seconds = time_build(*e.structure, mesh, e.brute() ? 1 : o.measure.build_repeats);
+    for (Entry& e : entries)
+        e.build_seconds = time_build(*e.structure, mesh, e.brute() ? 1 : o.measure.build_repeats);
 
     // The ray sets come from our BVH's primary hits; every structure then traces them.
     std::vector<Result> primary_hits;
     MeasureOptions once = o.measure;
     once.repeats = 0;
     const RaySet primary = primary_rays(camera);
-    const auto bvh = std::find_if(entries.begin(), entries.end(), [](const Entry& e) { return e.structure->name() == "bvh"; });
+    const auto bvh = std::find_if(entries.begin(), entries.end(),
+                                  [](const Entry& e) { return e.structure->name() == "bvh"; });
     time_set(*bvh->structure, primary, 1, once, primary_hits);
     const std::vector<RaySet> sets = make_ray_sets(camera, mesh, loaded.scene.lights, primary_hits);
 
     for (Entry& e : entries) {
         for (const RaySet& set : sets) {
-            const double tests = static_cast<double>(set.rays.size()) * static_cast<double>(mesh.triangles.size());
-            const std::size_t stride = e.brute() ? std::max<std::size_t>(1, static_cast<std::size_t>(tests / o.measure.brute_budget)) : 1;
+            const double tests =
+                static_cast<double>(set.rays.size()) * static_cast<double>(mesh.triangles.size());
+            const std::size_t stride =
+                e.brute() ? std::max<std::size_t>(
+                                1, static_cast<std::size_t>(tests / o.measure.brute_budget))
+                          : 1;
             e.answers.emplace_back();
             e.timing.push_back(time_set(*e.structure, set, stride, o.measure, e.answers.back()));
         }
     }
-    nlohmann::json report = {{"scene", o.scene},      {"triangles", mesh.triangles.size()},
-                             {"threads", o.measure.threads}, {"width", o.width},
-                             {"height", o.height},    {"repeats", o.measure.repeats},
+    nlohmann::json report = {{"scene", o.scene},
+                             {"triangles", mesh.triangles.size()},
+                             {"threads", o.measure.threads},
+                             {"width", o.width},
+                             {"height", o.height},
+                             {"repeats", o.measure.repeats},
                              {"embree", have_embree()}};
     for (const RaySet& set : sets) report["ray_counts"][set.name] = set.rays.size();
     print_table(entries, sets, mesh.triangles.size(), report);
     const bool ok = check(entries, sets, report);
-    std::printf("answers: %s\n", ok ? "every structure agrees with the references" : "WRONG ANSWERS (see above)");
+    std::printf("answers: %s\n",
+                ok ? "every structure agrees with the references" : "WRONG ANSWERS (see above)");
     if (!o.json.empty()) {
         std::ofstream out(o.json);
         out << report.dump(2) << '\n';

@@ -13,7 +13,7 @@ namespace rtbench {
 namespace {
 
 class Embree : public Structure {
-public:
+  public:
     explicit Embree(int threads) {
         const std::string config = "threads=" + std::to_string(threads);
         device_ = rtcNewDevice(config.c_str());
@@ -37,11 +37,13 @@ public:
         if (scene_) rtcReleaseScene(scene_);
         scene_ = rtcNewScene(device_);
         RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                     3 * sizeof(float), mesh.positions.size()));
+        auto* vertices = static_cast<float*>(
+            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                    3 * sizeof(float), mesh.positions.size()));
         std::memcpy(vertices, mesh.positions.data(), mesh.positions.size() * sizeof(rt::vec3));
-        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                       3 * sizeof(unsigned), mesh.triangles.size()));
+        auto* indices = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(unsigned), mesh.triangles.size()));
         std::memcpy(indices, mesh.triangles.data(), mesh.triangles.size() * sizeof(glm::uvec3));
         rtcCommitGeometry(geometry);
         rtcAttachGeometry(scene_, geometry);
@@ -72,7 +74,7 @@ public:
         return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
     }
 
-private:
+  private:
     static void set_ray(RTCRay& r, const rt::Ray& ray, float t_max) {
         r.org_x = ray.origin.x;
         r.org_y = ray.origin.y;

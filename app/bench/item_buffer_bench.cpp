@@ -18,7 +18,8 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
     rt::Scene& scene = loaded.scene;
     scene.camera = scene.camera.resized(o.width, o.height);
     scene.build();
-    const auto context = rt::gl::create_headless_context(rt::gl::parse_backend(o.gl, "rtbench"), "rtbench");
+    const auto context =
+        rt::gl::create_headless_context(rt::gl::parse_backend(o.gl, "rtbench"), "rtbench");
     rt::gl::RasterRenderer raster(scene);
     rt::RenderOptions options;
     options.threads = o.threads;
@@ -29,10 +30,12 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
     rt::RenderStats stats;
     for (int k = 0; k < o.repeats + 1; ++k) {  // the first round is a warm-up
         without = rt::render(scene, options, &stats);
-        if (k > 0) plain_frame.push_back(stats.seconds), plain_primary.push_back(stats.primary_seconds);
+        if (k > 0)
+            plain_frame.push_back(stats.seconds), plain_primary.push_back(stats.primary_seconds);
         const auto start = std::chrono::steady_clock::now();
         ib = raster.render_item_buffer(scene.camera);
-        const double pass = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double pass =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         with = rt::render(scene, options, &stats, {}, {}, &ib);
         if (k > 0) {
             ib_pass.push_back(pass);
@@ -42,22 +45,36 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
     }
     const rt::ImageDiff diff = rt::compare_images(with, without, 1.5 / 255.0);
     const double frame0 = median(plain_frame), frame1 = median(ib_frame);
-    const double primary0 = median(plain_primary), primary1 = median(ib_primary), pass = median(ib_pass);
-    std::printf("%s at %dx%d, %d threads, %s; medians of %d frames\n", o.scene.c_str(), o.width, o.height, o.threads,
-                context->description().c_str(), o.repeats);
-    std::printf("without item buffer: frame %.1f ms, primary rays %.1f ms\n", 1e3 * frame0, 1e3 * primary0);
-    std::printf("with item buffer:    frame %.1f ms = raster pass and read-back %.1f ms + trace %.1f ms (primary %.1f ms)\n",
-                1e3 * frame1, 1e3 * pass, 1e3 * (frame1 - pass), 1e3 * primary1);
-    std::printf("primary rays: %.2fx faster; net on the frame: %.2fx (%s %.1f ms); %llu fell back, %llu of %zu pixels differ\n",
-                primary0 / primary1, frame0 / frame1, frame1 < frame0 ? "saves" : "COSTS", 1e3 * std::abs(frame0 - frame1),
-                static_cast<unsigned long long>(stats.item_buffer_fallbacks),
-                static_cast<unsigned long long>(diff.pixels_over), with.pixels.size());
+    const double primary0 = median(plain_primary), primary1 = median(ib_primary),
+                 pass = median(ib_pass);
+    std::printf("%s at %dx%d, %d threads, %s; medians of %d frames\n", o.scene.c_str(), o.width,
+                o.height, o.threads, context->description().c_str(), o.repeats);
+    std::printf("without item buffer: frame %.1f ms, primary rays %.1f ms\n", 1e3 * frame0,
+                1e3 * primary0);
+    std::printf(
+        "with item buffer:    frame %.1f ms = raster pass and read-back %.1f ms + trace %.1f ms "
+        "(primary %.1f ms)\n",
+        1e3 * frame1, 1e3 * pass, 1e3 * (frame1 - pass), 1e3 * primary1);
+    std::printf(
+        "primary rays: %.2fx faster; net on the frame: %.2fx (%s %.1f ms); %llu fell back, %llu of "
+        "%zu pixels differ\n",
+        primary0 / primary1, frame0 / frame1, frame1 < frame0 ? "saves" : "COSTS",
+        1e3 * std::abs(frame0 - frame1),
+        static_cast<unsigned long long>(stats.item_buffer_fallbacks),
+        static_cast<unsigned long long>(diff.pixels_over), with.pixels.size());
     if (!o.json.empty()) {
-        const nlohmann::json j = {{"scene", o.scene}, {"width", o.width}, {"height", o.height}, {"threads", o.threads},
-                                  {"gl", context->description()}, {"frame_seconds_without", frame0},
-                                  {"frame_seconds_with", frame1}, {"primary_seconds_without", primary0},
-                                  {"primary_seconds_with", primary1}, {"raster_pass_seconds", pass},
-                                  {"net_speedup", frame0 / frame1}, {"fallback_pixels", stats.item_buffer_fallbacks},
+        const nlohmann::json j = {{"scene", o.scene},
+                                  {"width", o.width},
+                                  {"height", o.height},
+                                  {"threads", o.threads},
+                                  {"gl", context->description()},
+                                  {"frame_seconds_without", frame0},
+                                  {"frame_seconds_with", frame1},
+                                  {"primary_seconds_without", primary0},
+                                  {"primary_seconds_with", primary1},
+                                  {"raster_pass_seconds", pass},
+                                  {"net_speedup", frame0 / frame1},
+                                  {"fallback_pixels", stats.item_buffer_fallbacks},
                                   {"differing_pixels", diff.pixels_over}};
         std::ofstream(o.json) << j.dump(2) << '\n';
     }

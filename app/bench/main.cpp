@@ -13,7 +13,8 @@
 #include "core/error.h"
 
 int main(int argc, char** argv) {
-    CLI::App app{"rtbench: BVH, grid and brute force against Intel Embree; the item buffer's saving"};
+    CLI::App app{
+        "rtbench: BVH, grid and brute force against Intel Embree; the item buffer's saving"};
     std::string scene, json, size = "1280x720", csv = "sweep.csv", png = "sweep.png", gl = "auto";
     bool sweep = false, item_buffer = false;
     std::vector<std::string> only;
@@ -22,17 +23,22 @@ int main(int argc, char** argv) {
     app.add_option("scene", scene, "Scene (.json) or mesh (.obj)");
     app.add_option("--json", json, "Write the figures as JSON");
     app.add_option("--size", size, "Camera resolution WxH for primary rays (default 1280x720)");
-    app.add_option("--threads", threads, "Threads, for every structure alike")->check(CLI::Range(1, 256));
-    app.add_option("--repeats", repeats, "Timed passes (the median is reported)")->check(CLI::Range(1, 100));
-    app.add_option("--only", only, "Structures to run: brute, grid, bvh, embree (default: all)")->delimiter(',');
+    app.add_option("--threads", threads, "Threads, for every structure alike")
+        ->check(CLI::Range(1, 256));
+    app.add_option("--repeats", repeats, "Timed passes (the median is reported)")
+        ->check(CLI::Range(1, 100));
+    app.add_option("--only", only, "Structures to run: brute, grid, bvh, embree (default: all)")
+        ->delimiter(',');
     app.add_flag("--sweep", sweep, "Time per ray against triangle count on a tessellated sphere");
     app.add_option("--csv", csv, "--sweep: the data");
-    app.add_option("--counts", counts, "--sweep: triangle counts (default 1000,10000,100000,1000000)")
+    app.add_option("--counts", counts,
+                   "--sweep: triangle counts (default 1000,10000,100000,1000000)")
         ->delimiter(',')
         ->check(CLI::Range(8, 50000000));
     app.add_option("--png", png, "--sweep: the plot (needs gnuplot)");
     app.add_flag("--item-buffer", item_buffer, "A Whitted frame with and without the item buffer");
-    app.add_option("--gl", gl, "--item-buffer: egl, osmesa or auto")->check(CLI::IsMember({"egl", "osmesa", "auto"}));
+    app.add_option("--gl", gl, "--item-buffer: egl, osmesa or auto")
+        ->check(CLI::IsMember({"egl", "osmesa", "auto"}));
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -45,13 +51,15 @@ int main(int argc, char** argv) {
     const char* end = size.data() + size.size();
     const auto [x_at, ec1] = std::from_chars(size.data(), end, w);
     const bool size_ok = ec1 == std::errc{} && x_at != end && *x_at == 'x' &&
-                         std::from_chars(x_at + 1, end, h).ec == std::errc{} && w > 0 && h > 0 && w <= 16384 && h <= 16384;
+                         std::from_chars(x_at + 1, end, h).ec == std::errc{} && w > 0 && h > 0 &&
+                         w <= 16384 && h <= 16384;
     if (!size_ok) {
         std::cerr << "rtbench: --size: expected WxH, got \"" << size << "\"\n";
         return 1;
     }
     if (!sweep && scene.empty()) {
-        std::cerr << "rtbench: command line: a scene or mesh is required (or --sweep; see rtbench --help)\n";
+        std::cerr << "rtbench: command line: a scene or mesh is required (or --sweep; see rtbench "
+                     "--help)\n";
         return 1;
     }
     rtbench::MeasureOptions measure;

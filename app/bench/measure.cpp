@@ -17,8 +17,8 @@ bool faulty(const Structure& s) {
 
 }  // namespace
 
-SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride, const MeasureOptions& options,
-                   std::vector<Result>& answers) {
+SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
+                   const MeasureOptions& options, std::vector<Result>& answers) {
     const std::size_t count = (set.rays.size() + stride - 1) / stride;
     answers.assign(count, Result{});
     const auto pass = [&] {
@@ -41,7 +41,8 @@ SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride, co
     for (int k = 0; k < repeats; ++k) {
         const auto start = std::chrono::steady_clock::now();
         pass();
-        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        seconds.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     if (faulty(s))
         for (std::size_t i = 0; i < answers.size(); i += 50) answers[i] = Result{};
@@ -75,11 +76,17 @@ Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::s
 }
 
 nlohmann::json to_json(const SetTiming& t) {
-    return {{"mrays_per_s", t.mrays_per_s}, {"seconds", t.seconds}, {"rays", t.rays}, {"stride", t.stride}};
+    return {{"mrays_per_s", t.mrays_per_s},
+            {"seconds", t.seconds},
+            {"rays", t.rays},
+            {"stride", t.stride}};
 }
 
 nlohmann::json to_json(const Mismatches& m) {
-    return {{"checked", m.checked}, {"hit_miss", m.hit_miss}, {"wrong_hit", m.wrong_hit}, {"ok", m.ok()}};
+    return {{"checked", m.checked},
+            {"hit_miss", m.hit_miss},
+            {"wrong_hit", m.wrong_hit},
+            {"ok", m.ok()}};
 }
 
 }  // namespace rtbench

@@ -16,8 +16,8 @@ struct MeasureOptions {
 
 struct SetTiming {
     double mrays_per_s = 0.0;
-    double seconds = 0.0;  // median pass
-    std::size_t rays = 0;  // traced per pass
+    double seconds = 0.0;    // median pass
+    std::size_t rays = 0;    // traced per pass
     std::size_t stride = 1;  // 1: every ray; k: every k-th (brute force)
 };
 
@@ -31,8 +31,8 @@ struct Mismatches {
 
 // Traces every ray of `set` (or every stride-th) through `s`, after a warm-up pass,
 // `repeats` times; returns the median, and the answers of the last pass.
-SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride, const MeasureOptions& options,
-                   std::vector<Result>& answers);
+SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
+                   const MeasureOptions& options, std::vector<Result>& answers);
 
 // Compares answers[i] (for rays i * stride) with reference[i * ref_stride ...].
 Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::size_t stride,

@@ -9,7 +9,8 @@ namespace rtbench {
 
 struct SceneBenchOptions {
     std::string scene;
-    std::vector<std::string> only;  // structures to run (empty: all); bvh is always built, for the rays
+    std::vector<std::string>
+        only;          // structures to run (empty: all); bvh is always built, for the rays
     std::string json;  // empty: no JSON
     int width = 1280, height = 720;
     MeasureOptions measure;

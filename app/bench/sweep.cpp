@@ -16,7 +16,9 @@ namespace rtbench {
 namespace {
 
 // slices s, stacks s/2: s * s - 2 s triangles.
-int slices_for(int triangles) { return static_cast<int>(std::lround(1.0 + std::sqrt(1.0 + triangles))); }
+int slices_for(int triangles) {
+    return static_cast<int>(std::lround(1.0 + std::sqrt(1.0 + triangles)));
+}
 
 struct Row {
     std::size_t triangles;
@@ -29,7 +31,8 @@ void write_plot(const SweepOptions& o, const std::vector<Row>& rows) {
     const std::string data = o.png + ".dat", script = o.png + ".gnuplot";
     std::vector<std::string> names;
     for (const Row& r : rows)
-        if (std::find(names.begin(), names.end(), r.structure) == names.end()) names.push_back(r.structure);
+        if (std::find(names.begin(), names.end(), r.structure) == names.end())
+            names.push_back(r.structure);
     std::ofstream dat(data);
     for (const std::string& name : names) {
         dat << "\"" << name << "\"\n";
@@ -42,7 +45,8 @@ void write_plot(const SweepOptions& o, const std::vector<Row>& rows) {
     gp << "set terminal pngcairo size 900,600 font ',11'\n"
        << "set output '" << o.png << "'\n"
        << "set title 'rtbench --sweep: primary rays on a tessellated sphere'\n"
-       << "set logscale xy\nset xlabel 'triangles'\nset ylabel 'nanoseconds per ray (2 threads)'\nset grid\n"
+       << "set logscale xy\nset xlabel 'triangles'\nset ylabel 'nanoseconds per ray (2 "
+          "threads)'\nset grid\n"
        << "set key left top\n"
        << "plot for [i=0:" << names.size() - 1 << "] '" << data
        << "' index i using 1:2 with linespoints lw 2 title columnheader(1)\n";
@@ -63,7 +67,8 @@ int run_sweep(const SweepOptions& o) {
     std::vector<Row> rows;
     for (int wanted : o.triangle_counts) {
         const rt::TriangleMesh sphere = rt::tessellate_unit_sphere(slices_for(wanted));
-        const rt::Camera camera = rt::Camera::look_at({0.3f, 0.4f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 45.0f, o.width, o.height);
+        const rt::Camera camera =
+            rt::Camera::look_at({0.3f, 0.4f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 45.0f, o.width, o.height);
         RaySet primary{"primary", {}, {}, false};
         for (int y = 0; y < camera.rows; ++y)
             for (int x = 0; x < camera.cols; ++x) {
@@ -71,22 +76,30 @@ int run_sweep(const SweepOptions& o) {
                 primary.t_max.push_back(rt::kInfinity);
             }
         std::vector<std::unique_ptr<Structure>> structures;
-        for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh}) structures.push_back(make_ours(k));
+        for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh})
+            structures.push_back(make_ours(k));
         if (auto embree = make_embree(o.measure.threads)) structures.push_back(std::move(embree));
         for (auto& s : structures) {
             s->prepare(sphere);
             const auto start = std::chrono::steady_clock::now();
             s->build();
-            const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            const double tests = static_cast<double>(primary.rays.size()) * static_cast<double>(sphere.triangles.size());
+            const double build =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double tests = static_cast<double>(primary.rays.size()) *
+                                 static_cast<double>(sphere.triangles.size());
             const std::size_t stride =
-                s->name() == "brute" ? std::max<std::size_t>(1, static_cast<std::size_t>(tests / o.measure.brute_budget)) : 1;
+                s->name() == "brute"
+                    ? std::max<std::size_t>(
+                          1, static_cast<std::size_t>(tests / o.measure.brute_budget))
+                    : 1;
             std::vector<Result> answers;
             const SetTiming t = time_set(*s, primary, stride, o.measure, answers);
             const double ns = 1e9 * t.seconds / static_cast<double>(t.rays);
             rows.push_back({sphere.triangles.size(), s->name(), ns});
-            csv << sphere.triangles.size() << ',' << s->name() << ',' << ns << ',' << build << ',' << s->memory_bytes() << '\n';
-            std::printf("%10zu %-8s %12.1f %10.4f\n", sphere.triangles.size(), s->name().c_str(), ns, build);
+            csv << sphere.triangles.size() << ',' << s->name() << ',' << ns << ',' << build << ','
+                << s->memory_bytes() << '\n';
+            std::printf("%10zu %-8s %12.1f %10.4f\n", sphere.triangles.size(), s->name().c_str(),
+                        ns, build);
         }
     }
     csv.close();

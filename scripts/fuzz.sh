@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang (AddressSanitizer and UBSan on) and runs each
+# for SECONDS (default 30) from its seed corpus in tests/fuzz/corpus. A crash leaves
+# crash-* files in build-fuzz/; make each a regression file in tests/data/bad/.
+#   scripts/fuzz.sh [SECONDS]      a longer run: scripts/fuzz.sh 3600
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-30}
+scripts/setup.sh
+flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g -O1"
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DRTVIEW_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" >/dev/null
+cmake --build build-fuzz
+status=0
+for target in json:fuzz_scene_json obj:fuzz_obj; do
+    corpus=${target%%:*} binary=${target#*:}
+    work=build-fuzz/corpus-$corpus
+    mkdir -p "$work"
+    echo "== $binary: ${seconds}s from tests/fuzz/corpus/$corpus"
+    run=0
+    (cd build-fuzz && tests/fuzz/"$binary" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=4096 \
+        -print_final_stats=1 "corpus-$corpus" "../tests/fuzz/corpus/$corpus" >"$binary.log" 2>&1) || run=$?
+    grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|stat::peak_rss_mb)" "build-fuzz/$binary.log" || true
+    if [ "$run" -ne 0 ]; then
+        grep -E "ERROR|SUMMARY|Test unit written|==[0-9]+==" "build-fuzz/$binary.log" | head -20
+        echo "FAIL $binary (exit $run): see build-fuzz/$binary.log and build-fuzz/crash-*"
+        status=1
+    else
+        echo "ok   $binary"
+    fi
+done
+exit $status
