@@ -90,6 +90,23 @@ bool copy_triangles(const std::string& file, const tinyobj::ObjReader& reader, T
     return all_normals;
 }
 
+// Before tinyobjloader reads it: not too large, and text (a NUL byte in the first 64 KiB
+// means it is not an OBJ file), so garbage is refused at once rather than parsed.
+void check_is_obj_text(const std::filesystem::path& path) {
+    constexpr std::uintmax_t kMaxObjBytes = 2ull << 30;
+    std::error_code ec;
+    const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+    if (!ec && bytes > kMaxObjBytes)
+        throw Error(path.string(), "open", "is " + std::to_string(bytes >> 20) + " MiB; OBJ files are limited to 2 GiB");
+    std::ifstream in(path, std::ios::binary);
+    std::string head(64 * 1024, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    const auto nul = head.find('\0');
+    if (nul != std::string::npos)
+        throw Error(path.string(), "byte " + std::to_string(nul + 1), "a NUL byte: this is not an OBJ text file");
+}
+
 // tinyobjloader reads "nan", "inf" or "1e999" as some number without a word, so the
 // vertex lines are checked first: a coordinate must be a finite float.
 void check_vertex_lines(const std::filesystem::path& path) {
@@ -118,6 +135,7 @@ ObjData load_obj(const std::filesystem::path& path, float crease_degrees) {
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(file, "open", "cannot open file (does it exist?)");
 
+    check_is_obj_text(path);
     check_vertex_lines(path);
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;

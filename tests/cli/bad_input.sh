@@ -16,8 +16,9 @@ check() {
     local name=$1 file=$2
     shift 3
     cases=$((cases + 1))
-    local status=0
+    local status=0 start=$SECONDS
     timeout 20 "$rtrender" "$@" -o "$work/out.png" >"$work/stdout" 2>"$work/stderr" || status=$?
+    local took=$((SECONDS - start))
     local lines
     lines=$(wc -l <"$work/stderr")
     local message
@@ -30,6 +31,8 @@ check() {
         echo "FAIL $name: not 'FILE: WHERE: WHAT' naming $file: $message"
     elif [ -e "$work/out.png" ]; then
         echo "FAIL $name: wrote an image anyway"
+    elif [ "$took" -gt 2 ]; then
+        echo "FAIL $name: took ${took}s to refuse a bad file"
     else
         echo "ok   $name: $message"
         return
@@ -46,6 +49,16 @@ for path in "$corpus"/*.json "$corpus"/*.obj; do
     esac
     check "$name" "$expected" -- "$path"
 done
+
+# Made here rather than committed: huge sparse files, and NUL bytes in a text file.
+truncate -s 3G "$work/sparse.obj"
+truncate -s 100M "$work/sparse.json"
+printf 'v 0 0 0\n' >"$work/nul.obj" && truncate -s 1M "$work/nul.obj"
+for f in sparse.obj sparse.json nul.obj; do check "$f" "$work/$f" -- "$work/$f"; done
+# Paths with spaces and UTF-8: errors name them whole.
+mkdir -p "$work/scènes avec espaces"
+cp "$corpus/negative_radius.json" "$work/scènes avec espaces/sphère ü.json"
+check "UTF-8 path with spaces" "$work/scènes avec espaces/sphère ü.json" -- "$work/scènes avec espaces/sphère ü.json"
 
 scene="$corpus/../../../assets/scenes/tutorial.json"
 check "missing scene file" "$work/none.json" -- "$work/none.json"

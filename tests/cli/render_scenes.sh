@@ -40,6 +40,18 @@ else
     fail "exr: $(cat "$out/exr.log")"
 fi
 
+# A scene and its mesh under a path with spaces and UTF-8 renders like any other.
+cases=$((cases + 1))
+mkdir -p "$out/dossier é/models" "$out/dossier é/scènes"
+cp "$assets/models/cornell_box.obj" "$assets/models/cornell_box.mtl" "$out/dossier é/models/"
+cp "$assets/scenes/cornell.json" "$out/dossier é/scènes/boîte de Cornell.json"
+if "$rtrender" "$out/dossier é/scènes/boîte de Cornell.json" --size 64x64 -o "$out/dossier é/out ü.png" -q \
+        && [ -s "$out/dossier é/out ü.png" ]; then
+    echo "ok   UTF-8 paths with spaces"
+else
+    fail "UTF-8 paths with spaces"
+fi
+
 # Both pipelines and the item buffer: three images, the comparison, the timings.
 cases=$((cases + 1))
 if "$rtrender" "$assets/scenes/whitted.json" --mode both --item-buffer on --size 120x90 -o "$out/both.png" \

@@ -28,7 +28,7 @@ check() {  # check DESCRIPTION COMMAND...
 
 start_xvfb() {  # a display of our own: Xvfb picks a free number and tells it on fd 3
     exec 4>"$work/display"
-    Xvfb -displayfd 4 -screen 0 1280x1024x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
+    Xvfb -displayfd 4 -screen 0 3840x2160x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
     xvfb_pid=$!
     for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
     [ -s "$work/display" ] || { echo "Xvfb did not start: $(cat "$work/xvfb.log")"; exit 1; }

@@ -111,8 +111,8 @@ disagree=$(echo "$line" | sed -n 's/.*, \([0-9]*\) of \([0-9]*\) pixels disagree
 check "item buffer on: at most 0.1% of pixels disagree ($line)" \
     test -n "$disagree" -a "$(echo "$disagree" | awk '{print ($1 <= $2 / 1000)}')" = 1
 
-# Resizing (down to 1x1), hiding the window, and quick scene switches never crash.
-for size in "1 1" "1200 300" "200 900" "$W $H"; do xdotool windowsize "$wid" $size; sleep 0.3; done
+# Resizing (down to 1x1, up to 4K), hiding the window, and quick scene switches never crash.
+for size in "1 1" "3840 2160" "1200 300" "200 900" "$W $H"; do xdotool windowsize "$wid" $size; sleep 0.3; done
 xdotool windowunmap "$wid"; sleep 0.5; xdotool windowmap "$wid"; sleep 0.3
 after "^scene:" key Next Next Next Next Next Next Next Prior
 after "^traced:" true
