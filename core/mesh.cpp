@@ -18,25 +18,26 @@ void TriangleMesh::build(AccelKind kind) {
     }
     accel_.build(boxes, kind);
     const auto order = accel_.order();
-    const auto packed = [&](std::uint32_t slot) {
+    const auto set = [&](Triangle4& pack, int lane, std::uint32_t slot) {
         const glm::uvec3 idx = triangles[order[slot]];
-        return pack(positions[idx[0]], positions[idx[1]], positions[idx[2]]);
+        pack.set(lane, positions[idx[0]], positions[idx[1]], positions[idx[2]]);
     };
     packs_.clear();
-    leaf_pack_.clear();
-    packed_.clear();
+    leaf_pack_.assign(order.size(), 0);
     if (const Bvh* bvh = accel_.bvh()) {
-        leaf_pack_.assign(order.size(), 0);
         bvh->for_each_leaf([&](std::uint32_t first, std::uint32_t count) {
             leaf_pack_[first] = static_cast<std::uint32_t>(packs_.size());
             for (std::uint32_t i = 0; i < count; ++i) {
                 if (i % 4 == 0) packs_.emplace_back();  // zeroed: the spare lanes never hit
-                packs_.back().set(static_cast<int>(i % 4), packed(first + i));
+                set(packs_.back(), static_cast<int>(i % 4), first + i);
             }
         });
     } else {
-        packed_.resize(order.size());
-        for (std::uint32_t s = 0; s < order.size(); ++s) packed_[s] = packed(s);
+        packs_.resize(order.size());
+        for (std::uint32_t s = 0; s < order.size(); ++s) {
+            leaf_pack_[s] = s;
+            set(packs_[s], 0, s);
+        }
     }
 }
 
@@ -48,51 +49,45 @@ Aabb bounds_of(const TriangleMesh& mesh) {
 }
 
 std::size_t TriangleMesh::accel_memory_bytes() const {
-    return accel_.memory_bytes() + packed_.size() * sizeof(PackedTriangle) + packs_.size() * sizeof(Triangle4) +
+    return accel_.memory_bytes() + packs_.size() * sizeof(Triangle4) +
            leaf_pack_.size() * sizeof(std::uint32_t);
 }
 
 std::size_t TriangleMesh::memory_bytes() const {
     return positions.size() * sizeof(vec3) + triangles.size() * sizeof(glm::uvec3) +
            corner_normals.size() * sizeof(vec3) + materials.size() * sizeof(std::uint32_t) +
-           accel_.memory_bytes() + packed_.size() * sizeof(PackedTriangle);
+           accel_memory_bytes();
 }
 
 bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
     const auto order = accel_.order();
-    return accel_.traverse_leaves<false>(r, hit.t, [&](std::uint32_t first, std::uint32_t count, float& t_max) {
-        if (packs_.empty()) {  // grid or brute force: one triangle
-            const auto h = rt::intersect(packed_[first], r, t_max);
-            if (!h) return false;
-            t_max = h->t;
-            hit.prim = order[first];
-            hit.b1 = h->b1;
-            hit.b2 = h->b2;
-            return true;
-        }
-        bool found = false;
-        const std::uint32_t start = leaf_pack_[first];
-        for (std::uint32_t k = 0; 4 * k < count; ++k) {
-            const Triangle4Hit h = rt::intersect(packs_[start + k], r, t_max);
-            if (h.lane < 0) continue;
-            t_max = h.t;
-            hit.prim = order[first + 4 * k + static_cast<std::uint32_t>(h.lane)];
-            hit.b1 = h.b1;
-            hit.b2 = h.b2;
-            found = true;
-        }
-        return found;
-    });
+    const ShearedRay sheared(r);
+    return accel_.traverse_leaves<false>(
+        r, hit.t, [&](std::uint32_t first, std::uint32_t count, float& t_max) {
+            bool found = false;
+            const std::uint32_t start = leaf_pack_[first];
+            for (std::uint32_t k = 0; 4 * k < count; ++k) {
+                const Triangle4Hit h = rt::intersect(packs_[start + k], sheared, t_max);
+                if (h.lane < 0) continue;
+                t_max = h.t;
+                hit.prim = order[first + 4 * k + static_cast<std::uint32_t>(h.lane)];
+                hit.b1 = h.b1;
+                hit.b2 = h.b2;
+                found = true;
+            }
+            return found;
+        });
 }
 
 bool TriangleMesh::occluded(const Ray& r, float t_max) const {
-    return accel_.traverse_leaves<true>(r, t_max, [&](std::uint32_t first, std::uint32_t count, float& t_limit) {
-        if (packs_.empty()) return rt::intersect(packed_[first], r, t_limit).has_value();
-        const std::uint32_t start = leaf_pack_[first];
-        for (std::uint32_t k = 0; 4 * k < count; ++k)
-            if (rt::intersect(packs_[start + k], r, t_limit).lane >= 0) return true;
-        return false;
-    });
+    const ShearedRay sheared(r);
+    return accel_.traverse_leaves<true>(
+        r, t_max, [&](std::uint32_t first, std::uint32_t count, float& t_limit) {
+            const std::uint32_t start = leaf_pack_[first];
+            for (std::uint32_t k = 0; 4 * k < count; ++k)
+                if (rt::intersect(packs_[start + k], sheared, t_limit).lane >= 0) return true;
+            return false;
+        });
 }
 
 vec3 TriangleMesh::face_normal(std::uint32_t tri) const {

@@ -9,9 +9,9 @@
 #include <glm/vec3.hpp>
 
 #include "core/accel.h"
+#include "core/hit.h"
 #include "core/shapes.h"
 #include "core/triangle4.h"
-#include "core/hit.h"
 
 namespace rt {
 
@@ -40,11 +40,11 @@ struct TriangleMesh {
   private:
     Aabb bounds_;
     Accel accel_;
-    // The triangles in the structure's slot order: for a BVH four to a Triangle4, each
-    // leaf starting a new one (leaf_pack_[first slot] is its first); else one by one.
+    // The triangles in the structure's slot order, four to a Triangle4: for a BVH each
+    // leaf starts a new one (leaf_pack_[first slot] is its first); for the grid and brute
+    // force, slot s is lane 0 of packs_[s].
     std::vector<Triangle4> packs_;
     std::vector<std::uint32_t> leaf_pack_;
-    std::vector<PackedTriangle> packed_;
 };
 
 // The box around the triangles (unused vertices left out).

@@ -66,24 +66,6 @@ std::optional<TriangleHit> intersect_triangle(const vec3& a, const vec3& b, cons
     return TriangleHit{t, edge_ca * inv_nn, edge_ab * inv_nn};
 }
 
-PackedTriangle pack(const vec3& a, const vec3& b, const vec3& c) { return {a, b - a, c - a}; }
-
-std::optional<TriangleHit> intersect(const PackedTriangle& tri, const Ray& r, float t_max) {
-    const vec3 p = glm::cross(r.dir, tri.e2);
-    const float det = glm::dot(tri.e1, p);
-    if (det == 0.0f) return std::nullopt;  // parallel, or a degenerate triangle
-    const float inv_det = 1.0f / det;
-    const vec3 s = r.origin - tri.v0;
-    const float b1 = glm::dot(s, p) * inv_det;
-    if (b1 < 0.0f || b1 > 1.0f) return std::nullopt;
-    const vec3 q = glm::cross(s, tri.e1);
-    const float b2 = glm::dot(r.dir, q) * inv_det;
-    if (b2 < 0.0f || b1 + b2 > 1.0f) return std::nullopt;
-    const float t = glm::dot(tri.e2, q) * inv_det;
-    if (!(t > 0.0f && t < t_max)) return std::nullopt;
-    return TriangleHit{t, b1, b2};
-}
-
 void tangent_frame(const vec3& n, vec3& t1, vec3& t2) {
     // Duff et al. build the frame around z; with y and z swapped it is built around y.
     const vec3 m{n.x, n.z, n.y};

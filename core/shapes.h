@@ -52,16 +52,6 @@ struct TriangleHit {
 // The edge values, divided by n.n, are the barycentric coordinates.
 std::optional<TriangleHit> intersect_triangle(const vec3& a, const vec3& b, const vec3& c,
                                               const Ray& r, float t_max);
-// The same test in Moeller & Trumbore's form ("Fast, minimum storage ray/triangle
-// intersection", 1997) on a triangle stored as v0, e1 = v1 - v0, e2 = v2 - v0: the same
-// plane, inside test and barycentrics, fewer operations, no per-test cross product of
-// the edges. The hot path of meshes; tested against the tutorial's form.
-struct PackedTriangle {
-    vec3 v0, e1, e2;
-};
-PackedTriangle pack(const vec3& a, const vec3& b, const vec3& c);
-std::optional<TriangleHit> intersect(const PackedTriangle& tri, const Ray& r, float t_max);
-
 inline std::optional<TriangleHit> intersect(const Triangle& tri, const Ray& r, float t_max) {
     return intersect_triangle(tri.a, tri.b, tri.c, r, t_max);
 }

@@ -1,53 +1,75 @@
 #pragma once
-// Four triangles tested against one ray at once: Moeller & Trumbore's test (as in
-// shapes.h, the same operations in the same order, so the same answers) on lanes of
-// four floats, with GCC/Clang vector extensions (SSE on x86-64, NEON on ARM).
+// Four triangles against one ray at once, with the watertight test of Woop, Benthin and
+// Wald ("Watertight Ray/Triangle Intersection", JCGT 2013): the ray is sheared to the
+// z axis and the three 2D edge functions are evaluated from the original vertices, so a
+// ray through a shared edge or vertex of a closed mesh hits at least one of the
+// triangles: nothing leaks. It is the tutorial's test (a plane hit, then three edge
+// values that must share a sign, divided by their sum for the barycentrics) done in the
+// ray's own frame. Lanes are GCC/Clang vector extensions (SSE on x86-64, NEON on ARM).
 
+#include <cmath>
 #include <cstdint>
 
-#include "core/shapes.h"
+#include "core/ray.h"
 
 namespace rt {
 
 using Float4 = float __attribute__((vector_size(16)));
 
-struct Triangle4 {
-    Float4 v0[3], e1[3], e2[3];  // x, y, z lanes; unused lanes are degenerate (never hit)
+// A ray prepared for the watertight test: the axes permuted so that z is the largest
+// component of the direction, and the shear that maps the direction onto +z.
+struct ShearedRay {
+    int kx, ky, kz;
+    float sx, sy, sz;
+    vec3 origin;
 
-    void set(int lane, const PackedTriangle& t) {
-        for (int a = 0; a < 3; ++a) {
-            v0[a][lane] = t.v0[a];
-            e1[a][lane] = t.e1[a];
-            e2[a][lane] = t.e2[a];
+    explicit ShearedRay(const Ray& r) : origin(r.origin) {
+        const vec3 a{std::fabs(r.dir.x), std::fabs(r.dir.y), std::fabs(r.dir.z)};
+        kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+        kx = (kz + 1) % 3;
+        ky = (kx + 1) % 3;
+        if (r.dir[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
+        sx = r.dir[kx] / r.dir[kz];
+        sy = r.dir[ky] / r.dir[kz];
+        sz = 1.0f / r.dir[kz];
+    }
+};
+
+struct Triangle4 {
+    Float4 v[3][3];  // v[vertex][axis] lanes; unused lanes are all zero (never hit)
+
+    void set(int lane, const vec3& a, const vec3& b, const vec3& c) {
+        for (int axis = 0; axis < 3; ++axis) {
+            v[0][axis][lane] = a[axis];
+            v[1][axis][lane] = b[axis];
+            v[2][axis][lane] = c[axis];
         }
     }
 };
 
 struct Triangle4Hit {
-    int lane = -1;  // -1: no hit
-    float t = kInfinity, b1 = 0.0f, b2 = 0.0f;
+    int lane = -1;                              // -1: no hit
+    float t = kInfinity, b1 = 0.0f, b2 = 0.0f;  // b1, b2: weights of the second and third vertex
 };
 
-// The nearest hit among the four in (0, t_max).
-inline Triangle4Hit intersect(const Triangle4& tri, const Ray& r, float t_max) {
-    const Float4 dx = Float4{} + r.dir.x, dy = Float4{} + r.dir.y, dz = Float4{} + r.dir.z;
-    const Float4 px = dy * tri.e2[2] - dz * tri.e2[1];
-    const Float4 py = dz * tri.e2[0] - dx * tri.e2[2];
-    const Float4 pz = dx * tri.e2[1] - dy * tri.e2[0];
-    const Float4 det = tri.e1[0] * px + tri.e1[1] * py + tri.e1[2] * pz;
-    const Float4 inv_det = 1.0f / det;
-    const Float4 sx = r.origin.x - tri.v0[0], sy = r.origin.y - tri.v0[1], sz = r.origin.z - tri.v0[2];
-    const Float4 b1 = (sx * px + sy * py + sz * pz) * inv_det;
-    const Float4 qx = sy * tri.e1[2] - sz * tri.e1[1];
-    const Float4 qy = sz * tri.e1[0] - sx * tri.e1[2];
-    const Float4 qz = sx * tri.e1[1] - sy * tri.e1[0];
-    const Float4 b2 = (dx * qx + dy * qy + dz * qz) * inv_det;
-    const Float4 t = (tri.e2[0] * qx + tri.e2[1] * qy + tri.e2[2] * qz) * inv_det;
-    const auto ok = (det != 0.0f) & (b1 >= 0.0f) & (b1 <= 1.0f) & (b2 >= 0.0f) & (b1 + b2 <= 1.0f) & (t > 0.0f) &
-                    (t < t_max);
+inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r, float t_max) {
+    const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
+    const Float4 az = rel(0, r.kz), bz = rel(1, r.kz), cz = rel(2, r.kz);
+    const Float4 ax = rel(0, r.kx) - r.sx * az, ay = rel(0, r.ky) - r.sy * az;
+    const Float4 bx = rel(1, r.kx) - r.sx * bz, by = rel(1, r.ky) - r.sy * bz;
+    const Float4 cx = rel(2, r.kx) - r.sx * cz, cy = rel(2, r.ky) - r.sy * cz;
+    // The edge functions: each is the weight of the opposite vertex, times their sum.
+    const Float4 u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+    const Float4 det = u + v + w;
+    const Float4 t_scaled = r.sz * (u * az + v * bz + w * cz);  // t * det
+    const Float4 t = t_scaled / det;
+    const auto same_sign =
+        ((u >= 0.0f) & (v >= 0.0f) & (w >= 0.0f)) | ((u <= 0.0f) & (v <= 0.0f) & (w <= 0.0f));
+    const auto ok = same_sign & (det != 0.0f) & (t > 0.0f) & (t < t_max);
     Triangle4Hit best;
     for (int lane = 0; lane < 4; ++lane) {
-        if (ok[lane] && t[lane] < best.t) best = {lane, t[lane], b1[lane], b2[lane]};
+        if (ok[lane] && t[lane] < best.t)
+            best = {lane, t[lane], v[lane] / det[lane], w[lane] / det[lane]};
     }
     return best;
 }
