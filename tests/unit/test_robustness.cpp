@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/renderer.h"
+#include "core/shapes.h"
 #include "test_util.h"
 
 namespace rt {
@@ -74,6 +75,42 @@ TEST(Robustness, ReflectionsLeaveTheirSurfaceAtAnyScale) {
         EXPECT_NEAR(centre.x, 0.2f, 1e-4f) << scale;
         EXPECT_NEAR(centre.z, 0.7f, 1e-4f) << scale;
     }
+}
+
+// Degenerate triangles in a mesh (collinear, or with a repeated vertex), a zero-radius
+// sphere and rays parallel to a plane: never hit, never a NaN in a normal or a pixel.
+TEST(Robustness, DegenerateGeometryIsHarmless) {
+    TriangleMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    mesh.triangles = {{0, 1, 2}, {0, 0, 3}, {0, 1, 3}, {1, 4, 3}};  // two degenerate, two real
+    compute_corner_normals(mesh);
+    for (const vec3& n : mesh.corner_normals)
+        EXPECT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+    mesh.build();
+    Hit hit;
+    EXPECT_FALSE(mesh.intersect(Ray{{1.5f, 0.0f, 1.0f}, {0, 0, -1}},
+                                hit));  // through the collinear one only
+    EXPECT_FALSE(mesh.intersect(Ray{{0.0f, 0.5f, 1.0f}, {0, 0, -1}}, hit) && hit.prim == 1);
+    EXPECT_TRUE(mesh.intersect(Ray{{0.25f, 0.25f, 1.0f}, {0, 0, -1}}, hit));
+    EXPECT_EQ(hit.prim, 2u);
+
+    EXPECT_FALSE(intersect(Sphere{vec3(0.0f), 0.0f}, Ray{{0, 0, 5}, {0, 0, -1}}, kInfinity));
+    EXPECT_FALSE(
+        intersect(Plane{{0, 1, 0}, 0}, Ray{{0, 0, 5}, {0, 0, -1}}, kInfinity));  // in the plane
+
+    Scene scene;
+    scene.camera = test::axis_camera({0.5f, 0.5f, 3.0f});
+    scene.materials.push_back(Material{});
+    scene.meshes.push_back(mesh);
+    scene.objects.push_back(Object{"mesh", MeshRef{0, true}, 0, {}});
+    scene.objects.push_back(Object{"dot", Sphere{vec3(0.0f), 0.0f}, 0, {}});
+    scene.objects.push_back(
+        Object{"floor", Plane{{0, 1, 0}, 0.5f}, 0, {}});  // the camera is level with it
+    scene.lights.push_back(Light{Light::Type::kPoint, {0.5f, 0.5f, 3.0f}, {}, vec3(1.0f)});
+    scene.build();
+    RenderStats stats;
+    render(scene, {}, &stats);
+    EXPECT_EQ(stats.nonfinite_pixels, 0u);
 }
 
 }  // namespace
