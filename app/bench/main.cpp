@@ -3,13 +3,13 @@
 //   rtbench --sweep [--csv FILE] [--png FILE] [--counts N,N,...]
 //   rtbench --item-buffer SCENE [--json FILE] [--size WxH] [--gl egl|osmesa]
 
-#include <charconv>
 #include <iostream>
 #include <thread>
 
 #include <CLI/CLI.hpp>
 
 #include "app/bench/modes.h"
+#include "app/common/size_arg.h"
 #include "core/error.h"
 
 int main(int argc, char** argv) {
@@ -47,13 +47,8 @@ int main(int argc, char** argv) {
         std::cerr << "rtbench: command line: " << e.what() << " (see rtbench --help)\n";
         return 1;
     }
-    int w = 0, h = 0;
-    const char* end = size.data() + size.size();
-    const auto [x_at, ec1] = std::from_chars(size.data(), end, w);
-    const bool size_ok = ec1 == std::errc{} && x_at != end && *x_at == 'x' &&
-                         std::from_chars(x_at + 1, end, h).ec == std::errc{} && w > 0 && h > 0 &&
-                         w <= 16384 && h <= 16384;
-    if (!size_ok) {
+    const auto parsed = rtapp::parse_size(size);
+    if (!parsed) {
         std::cerr << "rtbench: --size: expected WxH, got \"" << size << "\"\n";
         return 1;
     }
@@ -62,6 +57,7 @@ int main(int argc, char** argv) {
                      "--help)\n";
         return 1;
     }
+    const auto [w, h] = *parsed;
     rtbench::MeasureOptions measure;
     measure.threads = threads;
     measure.repeats = repeats;

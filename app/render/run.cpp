@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/common/size_arg.h"
 #include "app/gl/context.h"
 #include "app/gl/raster_renderer.h"
 #include "app/render/options.h"
@@ -28,17 +29,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::optional<std::pair<int, int>> parse_size(const std::string& text) {
-    int w = 0, h = 0;
-    const char* end = text.data() + text.size();
-    const auto [x_at, ec1] = std::from_chars(text.data(), end, w);
-    if (ec1 != std::errc{} || x_at == end || (*x_at != 'x' && *x_at != 'X')) return std::nullopt;
-    const auto [h_end, ec2] = std::from_chars(x_at + 1, end, h);
-    if (ec2 != std::errc{} || h_end != end) return std::nullopt;
-    if (w < 1 || h < 1 || w > 16384 || h > 16384) return std::nullopt;
-    return std::make_pair(w, h);
 }
 
 // OUT.png, or for --mode both OUT.raster.png, OUT.trace.png and OUT.diff.png.
@@ -202,7 +192,7 @@ int Job::run() {
     if (!rt::is_supported_output(main_output))
         throw rt::Error(main_output.string(), "-o", "unsupported format; use .png or .exr");
     std::optional<std::pair<int, int>> size;
-    if (!o_.size.empty() && !(size = parse_size(o_.size)))
+    if (!o_.size.empty() && !(size = rtapp::parse_size(o_.size)))
         throw rt::Error("rtrender", "--size",
                         "expected WxH between 1x1 and 16384x16384, got \"" + o_.size + "\"");
 

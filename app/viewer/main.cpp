@@ -8,20 +8,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/common/size_arg.h"
 #include "app/viewer/viewer.h"
 #include "core/error.h"
-
-namespace {
-
-bool parse_size(const std::string& text, int& w, int& h) {
-    const char* end = text.data() + text.size();
-    const auto [x_at, ec1] = std::from_chars(text.data(), end, w);
-    if (ec1 != std::errc{} || x_at == end || (*x_at != 'x' && *x_at != 'X')) return false;
-    const auto [h_end, ec2] = std::from_chars(x_at + 1, end, h);
-    return ec2 == std::errc{} && h_end == end && w >= 64 && h >= 64 && w <= 16384 && h <= 16384;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     rtview::ViewerOptions options;
@@ -44,7 +33,9 @@ int main(int argc, char** argv) {
         std::cerr << "rtview: command line: " << e.what() << " (see rtview --help)\n";
         return 1;
     }
-    if (!size.empty() && !parse_size(size, options.width, options.height)) {
+    const auto parsed = rtapp::parse_size(size, 64);
+    if (parsed) std::tie(options.width, options.height) = *parsed;
+    if (!size.empty() && !parsed) {
         std::cerr << "rtview: --size: expected WxH between 64x64 and 16384x16384, got \"" << size
                   << "\"\n";
         return 1;
