@@ -8,6 +8,7 @@
 
 namespace rt::gl {
 
+// In the order of the keys 1 to 5 (the viewer relies on it).
 enum class View { kRaster, kTrace, kSplit, kDiff, kItemBuffer };
 
 struct CompositeInputs {

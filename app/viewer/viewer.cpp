@@ -286,22 +286,8 @@ void Viewer::on_key(int key, int action, int mods) {
         std::fflush(stdout);
     }
     if (action != GLFW_PRESS) return;
+    if (key >= GLFW_KEY_1 && key <= GLFW_KEY_5) return set_view(static_cast<View>(key - GLFW_KEY_1));
     switch (key) {
-        case GLFW_KEY_1:
-            set_view(View::kRaster);
-            break;
-        case GLFW_KEY_2:
-            set_view(View::kTrace);
-            break;
-        case GLFW_KEY_3:
-            set_view(View::kSplit);
-            break;
-        case GLFW_KEY_4:
-            set_view(View::kDiff);
-            break;
-        case GLFW_KEY_5:
-            set_view(View::kItemBuffer);
-            break;
         case GLFW_KEY_X:
             swap_ = !swap_;
             std::printf("swap: %s\n", swap_ ? "traced left" : "raster left");
