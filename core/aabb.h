@@ -45,17 +45,23 @@ inline Aabb Aabb::transformed(const glm::mat4& m) const {
 }
 
 // Slab test against a precomputed reciprocal direction; returns the entry distance or
-// +inf when the ray misses the box within (0, t_max).
+// +inf when the ray misses the box within (0, t_max). A ray lying in a face's plane
+// (direction 0 there, origin exactly on the face) gives 0 * inf = NaN for that plane;
+// NaN fails both comparisons below, so that plane constrains nothing and the ray counts
+// as inside the closed box, as it is.
 inline float slab_entry(const Aabb& box, const vec3& origin, const vec3& inv_dir, float t_max) {
-    const vec3 t0 = (box.lo - origin) * inv_dir;
-    const vec3 t1 = (box.hi - origin) * inv_dir;
-    const vec3 t_near = glm::min(t0, t1);
-    const vec3 t_far = glm::max(t0, t1);
-    const float enter = std::max({t_near.x, t_near.y, t_near.z, 0.0f});
+    float enter = 0.0f, leave = t_max;
+    for (int a = 0; a < 3; ++a) {
+        const float t_lo = (box.lo[a] - origin[a]) * inv_dir[a];
+        const float t_hi = (box.hi[a] - origin[a]) * inv_dir[a];
+        const bool negative = inv_dir[a] < 0.0f;
+        const float near = negative ? t_hi : t_lo, far = negative ? t_lo : t_hi;
+        if (near > enter) enter = near;
+        if (far < leave) leave = far;
+    }
     // The factor makes the far bound conservative against rounding (Ize, "Robust BVH
     // Ray Traversal", 2013): a ray that grazes a box edge is not lost.
-    const float leave = std::min({t_far.x, t_far.y, t_far.z, t_max}) * 1.00000024f;
-    return enter <= leave ? enter : kInfinity;
+    return enter <= leave * 1.00000024f ? enter : kInfinity;
 }
 
 }  // namespace rt

@@ -4,15 +4,20 @@ namespace rt {
 
 const char* accel_name(AccelKind kind) {
     switch (kind) {
-        case AccelKind::kBvh: return "bvh";
-        case AccelKind::kGrid: return "grid";
-        case AccelKind::kBrute: return "brute";
+        case AccelKind::kBvh:
+            return "bvh";
+        case AccelKind::kBvh2:
+            return "bvh2";
+        case AccelKind::kGrid:
+            return "grid";
+        case AccelKind::kBrute:
+            return "brute";
     }
     return "?";
 }
 
 std::optional<AccelKind> parse_accel(const std::string& name) {
-    for (AccelKind k : {AccelKind::kBvh, AccelKind::kGrid, AccelKind::kBrute})
+    for (AccelKind k : kAllAccelKinds)
         if (name == accel_name(k)) return k;
     return std::nullopt;
 }
@@ -22,6 +27,12 @@ void Accel::build(std::span<const Aabb> boxes, AccelKind kind) {
     order_.clear();
     switch (kind) {
         case AccelKind::kBvh: {
+            WideBvh wide;
+            wide.build(boxes);
+            impl_ = std::move(wide);
+            return;
+        }
+        case AccelKind::kBvh2: {
             Bvh bvh;
             bvh.build(boxes);
             impl_ = std::move(bvh);

@@ -1,7 +1,8 @@
 #pragma once
 // The acceleration structure behind a mesh's triangles and a scene's objects, chosen at
-// build time: the BVH (the default), a uniform grid, or brute force, the last two kept
-// as comparison points (rtrender --accel, rtbench).
+// build time: the four-wide BVH (the default), the binary BVH it is collapsed from, a
+// uniform grid, or brute force, the last three kept as comparison points (rtrender
+// --accel, rtbench).
 
 #include <numeric>
 #include <optional>
@@ -10,17 +11,20 @@
 
 #include "core/bvh.h"
 #include "core/grid.h"
+#include "core/wide_bvh.h"
 
 namespace rt {
 
-enum class AccelKind { kBvh, kGrid, kBrute };
+enum class AccelKind { kBvh, kBvh2, kGrid, kBrute };  // kBvh: four-wide; kBvh2: binary
 
 const char* accel_name(AccelKind kind);
-std::optional<AccelKind> parse_accel(const std::string& name);  // "bvh", "grid", "brute"
+std::optional<AccelKind> parse_accel(const std::string& name);  // "bvh", "bvh2", "grid", "brute"
+inline constexpr AccelKind kAllAccelKinds[] = {AccelKind::kBvh, AccelKind::kBvh2, AccelKind::kGrid,
+                                               AccelKind::kBrute};
 
 // Tests every primitive: the reference the others must agree with.
 class BruteForce {
-public:
+  public:
     void build(std::span<const Aabb> boxes) { count_ = static_cast<std::uint32_t>(boxes.size()); }
     template <bool kAnyHit, class HitPrim>
     bool traverse(const Ray&, float& t_max, HitPrim&& hit) const {
@@ -35,18 +39,19 @@ public:
     }
     std::size_t memory_bytes() const { return 0; }
 
-private:
+  private:
     std::uint32_t count_ = 0;
 };
 
 class Accel {
-public:
+  public:
     void build(std::span<const Aabb> boxes, AccelKind kind);
     AccelKind kind() const { return kind_; }
     std::size_t memory_bytes() const;
     // Slot s of the traversal is primitive order()[s]: callers may keep their data in
     // slot order (the BVH's leaf order) for locality.
     std::span<const std::uint32_t> order() const {
+        if (const auto* wide = std::get_if<WideBvh>(&impl_)) return wide->order();
         if (const auto* bvh = std::get_if<Bvh>(&impl_)) return bvh->order();
         return order_;
     }
@@ -55,21 +60,34 @@ public:
     // and returns true on a hit, having shortened t_max. kAnyHit stops at the first hit.
     template <bool kAnyHit, class HitPrim>
     bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
-        return std::visit([&](const auto& impl) { return impl.template traverse<kAnyHit>(ray, t_max, hit); }, impl_);
+        return std::visit(
+            [&](const auto& impl) { return impl.template traverse<kAnyHit>(ray, t_max, hit); },
+            impl_);
     }
 
     // The same a leaf at a time, `hit_leaf(first_slot, count, t_max)`: BVH leaves, or
     // single primitives for the other structures.
     template <bool kAnyHit, class HitLeaf>
     bool traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
-        if (const auto* bvh = std::get_if<Bvh>(&impl_)) return bvh->traverse_leaves<kAnyHit>(ray, t_max, hit_leaf);
-        return traverse<kAnyHit>(ray, t_max, [&](std::uint32_t slot, float& limit) { return hit_leaf(slot, 1u, limit); });
+        if (const auto* wide = std::get_if<WideBvh>(&impl_))
+            return wide->traverse_leaves<kAnyHit>(ray, t_max, hit_leaf);
+        if (const auto* bvh = std::get_if<Bvh>(&impl_))
+            return bvh->traverse_leaves<kAnyHit>(ray, t_max, hit_leaf);
+        return traverse<kAnyHit>(ray, t_max, [&](std::uint32_t slot, float& limit) {
+            return hit_leaf(slot, 1u, limit);
+        });
     }
-    const Bvh* bvh() const { return std::get_if<Bvh>(&impl_); }
+    // The leaves traverse_leaves() hands out, as `f(first_slot, count)`, in slot order.
+    template <class F>
+    void for_each_leaf(F&& f) const {
+        if (const auto* wide = std::get_if<WideBvh>(&impl_)) return wide->for_each_leaf(f);
+        if (const auto* bvh = std::get_if<Bvh>(&impl_)) return bvh->for_each_leaf(f);
+        for (std::uint32_t s = 0; s < order_.size(); ++s) f(s, 1u);
+    }
 
-private:
+  private:
     AccelKind kind_ = AccelKind::kBvh;
-    std::variant<Bvh, UniformGrid, BruteForce> impl_;
+    std::variant<WideBvh, Bvh, UniformGrid, BruteForce> impl_;
     std::vector<std::uint32_t> order_;  // the grid's and brute force's: the identity
 };
 

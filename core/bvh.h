@@ -34,6 +34,7 @@ class Bvh {
         return nodes_.size() * sizeof(BvhNode) + prims_.size() * sizeof(std::uint32_t);
     }
     std::size_t node_count() const { return nodes_.size(); }
+    std::span<const BvhNode> nodes() const { return nodes_; }  // root first, depth-first
     // The primitives in leaf order: slot s of the traversal is primitive order()[s].
     std::span<const std::uint32_t> order() const { return prims_; }
 

@@ -24,21 +24,13 @@ void TriangleMesh::build(AccelKind kind) {
     };
     packs_.clear();
     leaf_pack_.assign(order.size(), 0);
-    if (const Bvh* bvh = accel_.bvh()) {
-        bvh->for_each_leaf([&](std::uint32_t first, std::uint32_t count) {
-            leaf_pack_[first] = static_cast<std::uint32_t>(packs_.size());
-            for (std::uint32_t i = 0; i < count; ++i) {
-                if (i % 4 == 0) packs_.emplace_back();  // zeroed: the spare lanes never hit
-                set(packs_.back(), static_cast<int>(i % 4), first + i);
-            }
-        });
-    } else {
-        packs_.resize(order.size());
-        for (std::uint32_t s = 0; s < order.size(); ++s) {
-            leaf_pack_[s] = s;
-            set(packs_[s], 0, s);
+    accel_.for_each_leaf([&](std::uint32_t first, std::uint32_t count) {
+        leaf_pack_[first] = static_cast<std::uint32_t>(packs_.size());
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (i % 4 == 0) packs_.emplace_back();  // zeroed: the spare lanes never hit
+            set(packs_.back(), static_cast<int>(i % 4), first + i);
         }
-    }
+    });
 }
 
 Aabb bounds_of(const TriangleMesh& mesh) {

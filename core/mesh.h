@@ -40,9 +40,9 @@ struct TriangleMesh {
   private:
     Aabb bounds_;
     Accel accel_;
-    // The triangles in the structure's slot order, four to a Triangle4: for a BVH each
-    // leaf starts a new one (leaf_pack_[first slot] is its first); for the grid and brute
-    // force, slot s is lane 0 of packs_[s].
+    // The triangles in the structure's slot order, four to a Triangle4, each leaf
+    // starting a new one (leaf_pack_[first slot] is its first). The grid's and brute
+    // force's leaves are single triangles: slot s is lane 0 of packs_[s].
     std::vector<Triangle4> packs_;
     std::vector<std::uint32_t> leaf_pack_;
 };

@@ -5,16 +5,15 @@
 // ray through a shared edge or vertex of a closed mesh hits at least one of the
 // triangles: nothing leaks. It is the tutorial's test (a plane hit, then three edge
 // values that must share a sign, divided by their sum for the barycentrics) done in the
-// ray's own frame. Lanes are GCC/Clang vector extensions (SSE on x86-64, NEON on ARM).
+// ray's own frame, four triangles a time (core/simd.h).
 
 #include <cmath>
 #include <cstdint>
 
 #include "core/ray.h"
+#include "core/simd.h"
 
 namespace rt {
-
-using Float4 = float __attribute__((vector_size(16)));
 
 // A ray prepared for the watertight test: the axes permuted so that z is the largest
 // component of the direction, and the shear that maps the direction onto +z.
@@ -60,16 +59,20 @@ inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r, float t
     const Float4 cx = rel(2, r.kx) - r.sx * cz, cy = rel(2, r.ky) - r.sy * cz;
     // The edge functions: each is the weight of the opposite vertex, times their sum.
     const Float4 u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
-    const Float4 det = u + v + w;
-    const Float4 t_scaled = r.sz * (u * az + v * bz + w * cz);  // t * det
-    const Float4 t = t_scaled / det;
-    const auto same_sign =
+    const Mask4 same_sign =
         ((u >= 0.0f) & (v >= 0.0f) & (w >= 0.0f)) | ((u <= 0.0f) & (v <= 0.0f) & (w <= 0.0f));
-    const auto ok = same_sign & (det != 0.0f) & (t > 0.0f) & (t < t_max);
+    const Float4 det = u + v + w;
+    const Mask4 inside = same_sign & (det != 0.0f);
     Triangle4Hit best;
-    for (int lane = 0; lane < 4; ++lane) {
-        if (ok[lane] && t[lane] < best.t)
-            best = {lane, t[lane], v[lane] / det[lane], w[lane] / det[lane]};
+    if (bits(inside) == 0) return best;  // most leaf tests end here, before any division
+    const Float4 t = r.sz * (u * az + v * bz + w * cz) / det;
+    for (unsigned mask = bits(inside & (t > 0.0f) & (t < t_max)); mask != 0; mask &= mask - 1) {
+        const int lane = __builtin_ctz(mask);
+        if (t[lane] < best.t) best = {lane, t[lane], 0.0f, 0.0f};
+    }
+    if (best.lane >= 0) {
+        best.b1 = v[best.lane] / det[best.lane];
+        best.b2 = w[best.lane] / det[best.lane];
     }
     return best;
 }

@@ -147,7 +147,7 @@ int run_scene(const SceneBenchOptions& o) {
         o.measure.threads, o.measure.repeats, have_embree() ? "" : " (built without Embree)");
 
     std::vector<Entry> entries;
-    for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh})
+    for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2, rt::AccelKind::kBvh})
         entries.emplace_back(make_ours(k));
     if (auto embree = make_embree(o.measure.threads)) entries.emplace_back(std::move(embree));
     const auto wanted = [&](const Entry& e) {

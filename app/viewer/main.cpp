@@ -1,6 +1,6 @@
 // rtview: the interactive viewer.
 //   rtview [SCENE] [--size WxH] [--view raster|trace|split|diff|itembuffer] [--save-dir DIR]
-//          [--accel bvh|grid|brute]
+//          [--accel bvh|bvh2|grid|brute]
 
 #include <charconv>
 #include <iostream>
@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"raster", "trace", "split", "diff", "itembuffer"}));
     app.add_option("--save-dir", save_dir, "Where F12 saves images (default: here)");
     app.add_option("--accel", accel, "Acceleration structure: bvh (default), grid or brute")
-        ->check(CLI::IsMember({"bvh", "grid", "brute"}));
+        ->check(CLI::IsMember({"bvh", "bvh2", "grid", "brute"}));
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

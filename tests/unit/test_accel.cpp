@@ -115,12 +115,16 @@ TEST_P(AccelTest, FlatSceneAndAxisAlignedRays) {
         EXPECT_FLOAT_EQ(down.t, 5.0f);
         Hit along;  // in the plane of the triangles: parallel, never a hit
         EXPECT_FALSE(mesh.intersect(Ray{{-1, 0, x}, {1, 0, 0}}, along));
+        // In the plane x = i, where boxes have faces: (face - origin) / 0 is NaN in the
+        // slab test, and the hit on the triangles' shared edge must not be lost.
+        Hit on_face;
+        hits += mesh.intersect(Ray{{static_cast<float>(i), 5, 7.25f}, {0, -1, 0}}, on_face);
+        EXPECT_FLOAT_EQ(on_face.t, 5.0f);
     }
-    EXPECT_EQ(hits, 80);
+    EXPECT_EQ(hits, 120);
 }
 
-INSTANTIATE_TEST_SUITE_P(Structures, AccelTest,
-                         ::testing::Values(AccelKind::kBvh, AccelKind::kGrid, AccelKind::kBrute),
+INSTANTIATE_TEST_SUITE_P(Structures, AccelTest, ::testing::ValuesIn(kAllAccelKinds),
                          [](const auto& param_info) {
                              return std::string(accel_name(param_info.param));
                          });

@@ -1,0 +1,172 @@
+#pragma once
+// A four-wide BVH, collapsed from the binary one (core/bvh.h) as in Dammertz et al.,
+// "Shallow Bounding Volume Hierarchies for Fast SIMD Ray Tracing of Incoherent Rays"
+// (2008): a node holds the boxes of up to four children as the lanes of six Float4s,
+// and one slab test checks all four. Subtrees of at most four primitives become one
+// leaf, which a mesh tests with one Triangle4. About a quarter of the nodes of the
+// binary tree and a quarter of the box tests, done four at once.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "core/aabb.h"
+#include "core/bvh.h"
+#include "core/simd.h"
+
+namespace rt {
+
+struct alignas(64) WideBvhNode {
+    static constexpr std::uint32_t kEmpty = 0;  // count of an unused lane (its box is empty)
+
+    Float4 bounds[6];        // lo x, y, z, hi x, y, z; lane = child; unused: lo +inf, hi -inf
+    std::uint32_t child[4];  // interior child: node index; leaf: its first slot
+    std::uint32_t count[4];  // leaf: primitives (1..4); interior child or unused lane: 0
+};
+static_assert(sizeof(WideBvhNode) == 128, "two cache lines");
+
+class WideBvh {
+  public:
+    static constexpr std::uint32_t kLeafSize = 4;
+
+    void build(std::span<const Aabb> prim_boxes);
+
+    bool empty() const { return nodes_.empty(); }
+    Aabb bounds() const { return bounds_; }
+    std::size_t memory_bytes() const {
+        return nodes_.size() * sizeof(WideBvhNode) + prims_.size() * sizeof(std::uint32_t);
+    }
+    std::size_t node_count() const { return nodes_.size(); }
+    std::span<const std::uint32_t> order() const { return prims_; }
+
+    // As Bvh::traverse_leaves: `hit_leaf(first_slot, count, t_max)` for the leaves the
+    // ray enters within (0, t_max), nearest first unless kAnyHit.
+    template <bool kAnyHit, class HitLeaf>
+    bool traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const;
+    template <bool kAnyHit, class HitPrim>
+    bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const;
+    template <class F>
+    void for_each_leaf(F&& f) const {
+        for (const WideBvhNode& n : nodes_)
+            for (int lane = 0; lane < 4; ++lane)
+                if (n.count[lane] != 0) f(n.child[lane], n.count[lane]);
+    }
+
+  private:
+    std::uint32_t collapse(std::span<const BvhNode> binary, std::uint32_t index);
+
+    std::vector<WideBvhNode> nodes_;
+    std::vector<std::uint32_t> prims_;
+    std::vector<std::uint32_t> subtree_begin_, subtree_end_;  // build only: slot ranges
+    Aabb bounds_;
+};
+
+namespace detail {
+
+// A ray set up for slab tests against four boxes: for each axis the near plane (lo if
+// the direction is positive, hi if negative) and the far one, so no min/max per axis
+// is needed and an unused lane (lo +inf, hi -inf) always misses. As in slab_entry
+// (core/aabb.h), a plane the ray lies in gives NaN, which min4/max4 drop: the order of
+// their operands keeps the running bound, so the ray counts as inside that slab.
+struct BoxRay {
+    Float4 inv[3], origin[3];  // each splat over the lanes
+    int near[3], far[3];
+
+    explicit BoxRay(const Ray& ray) {
+        for (int a = 0; a < 3; ++a) {
+            const float inv_a = 1.0f / ray.dir[a];
+            inv[a] = splat(inv_a);
+            origin[a] = splat(ray.origin[a]);
+            near[a] = inv_a < 0.0f ? a + 3 : a;
+            far[a] = inv_a < 0.0f ? a : a + 3;
+        }
+    }
+    // Entry distances of the four children, and a bit per child the ray enters in (0, t_max).
+    unsigned test(const WideBvhNode& n, float t_max, Float4& t_enter) const {
+        // (plane - origin) * inv, not plane * inv - origin * inv: one rounding, as Ize's
+        // bound assumes; the second form loses rays at shared box faces.
+        const auto plane = [&](int index, int a) { return (n.bounds[index] - origin[a]) * inv[a]; };
+        t_enter =
+            max4(max4(plane(near[0], 0), plane(near[1], 1)), max4(plane(near[2], 2), splat(0.0f)));
+        // Ize's factor, as in slab_entry (core/aabb.h): grazing rays are not lost.
+        const Float4 t_leave =
+            min4(min4(plane(far[0], 0), plane(far[1], 1)), min4(plane(far[2], 2), splat(t_max))) *
+            1.00000024f;
+        return bits(t_enter <= t_leave);
+    }
+};
+
+}  // namespace detail
+
+template <bool kAnyHit, class HitLeaf>
+bool WideBvh::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
+    if (nodes_.empty()) return false;
+    const detail::BoxRay box_ray(ray);
+    struct Pending {
+        std::uint32_t child, count;  // count 0: a node
+        float t_enter;               // skipped unvisited if a hit since is nearer
+    };
+    std::array<Pending, 3 * Bvh::kMaxDepth + 4> stack;  // a node adds at most three
+    int top = 0;
+    const auto pop = [&](Pending& next) {
+        do {
+            if (top == 0) return false;
+            next = stack[--top];
+        } while (next.t_enter >= t_max);
+        return true;
+    };
+    Pending current{0, 0, 0.0f};
+    bool found = false;
+    for (;;) {
+        // Down the nearest child entered until a leaf; the others wait on the stack,
+        // sorted so that the nearest is popped first (a shadow feeler takes any hit, so
+        // its order does not matter).
+        bool missed = false;
+        while (current.count == 0) {
+            const WideBvhNode& node = nodes_[current.child];
+            Float4 t_enter;
+            unsigned mask = box_ray.test(node, t_max, t_enter);
+            if (mask == 0) {
+                missed = true;
+                break;
+            }
+            int lane = __builtin_ctz(mask);
+            current = {node.child[lane], node.count[lane], t_enter[lane]};
+            const int first = top;
+            for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
+                lane = __builtin_ctz(mask);
+                Pending other{node.child[lane], node.count[lane], t_enter[lane]};
+                if (!kAnyHit && other.t_enter < current.t_enter) std::swap(other, current);
+                int i = top++;
+                if constexpr (!kAnyHit)
+                    for (; i > first && stack[i - 1].t_enter < other.t_enter; --i)
+                        stack[i] = stack[i - 1];
+                stack[i] = other;
+            }
+        }
+        if (!missed && hit_leaf(current.child, current.count, t_max)) {
+            found = true;
+            if constexpr (kAnyHit) return true;
+        }
+        if (!pop(current)) return found;
+    }
+}
+
+template <bool kAnyHit, class HitPrim>
+bool WideBvh::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
+    return traverse_leaves<kAnyHit>(ray, t_max,
+                                    [&](std::uint32_t first, std::uint32_t count, float& limit) {
+                                        bool found = false;
+                                        for (std::uint32_t i = first; i < first + count; ++i) {
+                                            if (hit(i, limit)) {
+                                                found = true;
+                                                if constexpr (kAnyHit) return true;
+                                            }
+                                        }
+                                        return found;
+                                    });
+}
+
+}  // namespace rt
