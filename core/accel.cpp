@@ -27,7 +27,7 @@ void Accel::build(std::span<const Aabb> boxes, AccelKind kind) {
     order_.clear();
     switch (kind) {
         case AccelKind::kBvh: {
-            WideBvh wide;
+            DefaultWideBvh wide;
             wide.build(boxes);
             impl_ = std::move(wide);
             return;

@@ -1,7 +1,7 @@
 #pragma once
 // The acceleration structure behind a mesh's triangles and a scene's objects, chosen at
-// build time: the four-wide BVH (the default), the binary BVH it is collapsed from, a
-// uniform grid, or brute force, the last three kept as comparison points (rtrender
+// build time: the wide BVH (the default; 4 or 8 lanes, core/simd.h), the binary BVH it is collapsed
+// from, a uniform grid, or brute force, the last three kept as comparison points (rtrender
 // --accel, rtbench).
 
 #include <numeric>
@@ -15,7 +15,7 @@
 
 namespace rt {
 
-enum class AccelKind { kBvh, kBvh2, kGrid, kBrute };  // kBvh: four-wide; kBvh2: binary
+enum class AccelKind { kBvh, kBvh2, kGrid, kBrute };  // kBvh: wide; kBvh2: binary
 
 const char* accel_name(AccelKind kind);
 std::optional<AccelKind> parse_accel(const std::string& name);  // "bvh", "bvh2", "grid", "brute"
@@ -51,7 +51,7 @@ class Accel {
     // Slot s of the traversal is primitive order()[s]: callers may keep their data in
     // slot order (the BVH's leaf order) for locality.
     std::span<const std::uint32_t> order() const {
-        if (const auto* wide = std::get_if<WideBvh>(&impl_)) return wide->order();
+        if (const auto* wide = std::get_if<DefaultWideBvh>(&impl_)) return wide->order();
         if (const auto* bvh = std::get_if<Bvh>(&impl_)) return bvh->order();
         return order_;
     }
@@ -69,7 +69,7 @@ class Accel {
     // single primitives for the other structures.
     template <bool kAnyHit, class HitLeaf>
     bool traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
-        if (const auto* wide = std::get_if<WideBvh>(&impl_))
+        if (const auto* wide = std::get_if<DefaultWideBvh>(&impl_))
             return wide->traverse_leaves<kAnyHit>(ray, t_max, hit_leaf);
         if (const auto* bvh = std::get_if<Bvh>(&impl_))
             return bvh->traverse_leaves<kAnyHit>(ray, t_max, hit_leaf);
@@ -80,14 +80,14 @@ class Accel {
     // The leaves traverse_leaves() hands out, as `f(first_slot, count)`, in slot order.
     template <class F>
     void for_each_leaf(F&& f) const {
-        if (const auto* wide = std::get_if<WideBvh>(&impl_)) return wide->for_each_leaf(f);
+        if (const auto* wide = std::get_if<DefaultWideBvh>(&impl_)) return wide->for_each_leaf(f);
         if (const auto* bvh = std::get_if<Bvh>(&impl_)) return bvh->for_each_leaf(f);
         for (std::uint32_t s = 0; s < order_.size(); ++s) f(s, 1u);
     }
 
   private:
     AccelKind kind_ = AccelKind::kBvh;
-    std::variant<WideBvh, Bvh, UniformGrid, BruteForce> impl_;
+    std::variant<DefaultWideBvh, Bvh, UniformGrid, BruteForce> impl_;
     std::vector<std::uint32_t> order_;  // the grid's and brute force's: the identity
 };
 

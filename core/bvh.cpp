@@ -1,84 +1,128 @@
 #include "core/bvh.h"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <future>
 #include <thread>
+
+#include "core/simd.h"
 
 namespace rt {
 namespace {
 
 constexpr int kBins = 16;
-constexpr std::uint32_t kMaxLeafSize = 2;
 constexpr float kTraversalCost = 1.0f;         // relative to one primitive test
 constexpr std::uint32_t kParallelMin = 20000;  // subtrees smaller than this are built in place
 
-struct Split {
-    int axis = -1;
-    float position = 0.0f;
-    float cost = kInfinity;
+// A box in SIMD lanes x, y, z (the fourth is spare), so growing it is two instructions.
+struct Box4 {
+    Float4 lo = splat<Float4>(kInfinity), hi = splat<Float4>(-kInfinity);
+
+    void grow(const Float4& l, const Float4& h) {
+        lo = vmin(lo, l);
+        hi = vmax(hi, h);
+    }
+    void grow(const Box4& b) { grow(b.lo, b.hi); }
+    float half_area() const {
+        const Float4 e = hi - lo;
+        return e[0] >= 0.0f && e[1] >= 0.0f && e[2] >= 0.0f
+                   ? e[0] * e[1] + e[1] * e[2] + e[2] * e[0]
+                   : 0.0f;
+    }
+    Aabb aabb() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
 };
 
-// Builds the subtree of prims[begin, end) into its own node array; the prims array is
+// A primitive's box, moved around in place as the build partitions: no indirection.
+// The spare lane of lo carries the primitive's index, of hi nothing.
+struct PrimRef {
+    Float4 lo, hi;
+
+    std::uint32_t index() const { return std::bit_cast<std::uint32_t>(lo[3]); }
+    Float4 centre2() const { return lo + hi; }  // twice the centre: the halving is left out
+};
+
+// The primitives of a subtree: their boxes' union and their centres' (doubled) bounds.
+struct Bounds {
+    Box4 box, centres;
+};
+
+struct Split {
+    int axis = -1;
+    int bin = 0;  // bins [0, bin] go left
+    float cost = kInfinity;
+    Bounds left, right;
+};
+
+// Which of the bins along one axis a doubled centre falls in.
+struct Binner {
+    int axis;
+    float lo, scale;
+
+    int operator()(const PrimRef& p) const {
+        const int b = static_cast<int>((p.centre2()[axis] - lo) * scale);
+        return std::clamp(b, 0, kBins - 1);
+    }
+};
+
+// Builds the subtree of refs[begin, end) into its own node array; the refs array is
 // shared, and subtrees work on disjoint ranges of it, so they can run in parallel.
 struct Builder {
-    std::span<const Aabb> boxes;
-    const std::vector<vec3>& centres;
-    std::vector<std::uint32_t>& prims;
+    std::vector<PrimRef>& refs;
+    std::uint32_t max_leaf;
     std::vector<BvhNode> nodes;
     int parallel_depth = 0;  // levels still allowed to hand a subtree to another thread
 
     // Binned SAH (Wald, "On fast construction of SAH-based BVHs", 2007) along the axis
-    // where the centroids spread most: one pass bins them, a sweep finds the cheapest split.
-    Split find_split(std::uint32_t begin, std::uint32_t end, const Aabb& centre_box) const {
-        const vec3 extent = centre_box.extent();
-        const int axis =
-            extent.x >= extent.y ? (extent.x >= extent.z ? 0 : 2) : (extent.y >= extent.z ? 1 : 2);
-        if (!(extent[axis] > 0.0f)) return {};
-        const float lo = centre_box.lo[axis], scale = static_cast<float>(kBins) / extent[axis];
-        std::array<Aabb, kBins> bin_box{};
-        std::array<std::uint32_t, kBins> bin_count{};
+    // where the centres spread most: one pass bins them, a sweep finds the cheapest split
+    // and, from the bins, both sides' bounds, so no child needs a pass of its own.
+    Split find_split(std::uint32_t begin, std::uint32_t end, const Bounds& bounds,
+                     Binner& binner) const {
+        const Float4 extent = bounds.centres.hi - bounds.centres.lo;
+        const int axis = extent[0] >= extent[1] ? (extent[0] >= extent[2] ? 0 : 2)
+                                                : (extent[1] >= extent[2] ? 1 : 2);
+        const float scale = static_cast<float>(kBins) / extent[axis];
+        if (!(extent[axis] > 0.0f) || !std::isfinite(scale)) return {};
+        binner = {axis, bounds.centres.lo[axis], scale};
+        std::array<Bounds, kBins> bins{};
+        std::array<std::uint32_t, kBins> count{};
         for (std::uint32_t i = begin; i < end; ++i) {
-            const std::uint32_t p = prims[i];
-            const int b = std::min(kBins - 1, static_cast<int>((centres[p][axis] - lo) * scale));
-            bin_box[b].grow(boxes[p]);
-            ++bin_count[b];
+            const PrimRef& p = refs[i];
+            const int b = binner(p);
+            bins[b].box.grow(p.lo, p.hi);
+            const Float4 c = p.centre2();
+            bins[b].centres.grow(c, c);
+            ++count[b];
         }
-        // Sweep from the right for every right side's cost, then from the left.
+        // Sweep from the right for every right side, then from the left.
+        std::array<Bounds, kBins> right{};
         std::array<float, kBins> right_cost{};
-        Aabb acc;
+        Bounds acc;
         std::uint32_t n = 0;
         for (int b = kBins - 1; b > 0; --b) {
-            acc.grow(bin_box[b]);
-            n += bin_count[b];
-            right_cost[b] = acc.half_area() * static_cast<float>(n);
+            acc.box.grow(bins[b].box);
+            acc.centres.grow(bins[b].centres);
+            n += count[b];
+            right[b] = acc;
+            right_cost[b] = acc.box.half_area() * static_cast<float>(n);
         }
         Split best;
-        acc = Aabb{};
+        acc = Bounds{};
         n = 0;
         for (int b = 0; b < kBins - 1; ++b) {
-            acc.grow(bin_box[b]);
-            n += bin_count[b];
-            const float cost = acc.half_area() * static_cast<float>(n) + right_cost[b + 1];
-            if (cost < best.cost) best = {axis, lo + static_cast<float>(b + 1) / scale, cost};
+            acc.box.grow(bins[b].box);
+            acc.centres.grow(bins[b].centres);
+            n += count[b];
+            const float cost = acc.box.half_area() * static_cast<float>(n) + right_cost[b + 1];
+            if (n > 0 && n < end - begin && cost < best.cost)
+                best = {axis, b, cost, acc, right[b + 1]};
         }
         return best;
     }
 
-    std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const Split& split) {
-        const auto middle = std::partition(
-            prims.begin() + begin, prims.begin() + end,
-            [&](std::uint32_t p) { return centres[p][split.axis] < split.position; });
-        const auto mid = static_cast<std::uint32_t>(middle - prims.begin());
-        return mid == begin || mid == end ? begin + (end - begin) / 2
-                                          : mid;  // rounding put all on one side
-    }
-
-    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth) {
-        Aabb box, centre_box;
-        for (std::uint32_t i = begin; i < end; ++i) {
-            box.grow(boxes[prims[i]]);
-            centre_box.grow(centres[prims[i]]);
-        }
+    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, const Bounds& bounds,
+               int depth) {
+        const Aabb box = bounds.box.aabb();
         nodes[node].lo = box.lo;
         nodes[node].hi = box.hi;
         const std::uint32_t count = end - begin;
@@ -86,32 +130,34 @@ struct Builder {
             nodes[node].first = begin;
             nodes[node].count = count;
         };
-        if (count <= 2 || depth >= Bvh::kMaxDepth) return leaf();
-        const Split split = find_split(begin, end, centre_box);
-        const float leaf_cost = box.half_area() * static_cast<float>(count);
-        if (split.axis < 0 ||
-            (kTraversalCost * box.half_area() + split.cost >= leaf_cost && count <= kMaxLeafSize))
-            return leaf();
-        const std::uint32_t mid = partition(begin, end, split);
+        if (count <= max_leaf || depth >= Bvh::kMaxDepth) return leaf();
+        Binner binner{};
+        const Split split = find_split(begin, end, bounds, binner);
+        if (split.axis < 0) return leaf();  // all centres in one point: nothing separates them
+        const auto middle =
+            std::partition(refs.begin() + begin, refs.begin() + end,
+                           [&](const PrimRef& p) { return binner(p) <= split.bin; });
+        const auto mid = static_cast<std::uint32_t>(middle - refs.begin());
 
         // The right subtree on another thread while this one builds the left.
         std::future<std::vector<BvhNode>> right_nodes;
         if (parallel_depth > 0 && end - mid >= kParallelMin) {
             // Captured by value: this builder goes on changing parallel_depth meanwhile.
-            right_nodes = std::async(std::launch::async,
-                                     [this, mid, end, depth, levels = parallel_depth - 1] {
-                                         Builder right{boxes, centres, prims, {}, levels};
-                                         right.nodes.reserve(2 * (end - mid));
-                                         right.nodes.emplace_back();
-                                         right.build(0, mid, end, depth + 1);
-                                         return std::move(right.nodes);
-                                     });
+            right_nodes = std::async(
+                std::launch::async,
+                [this, mid, end, depth, right = split.right, levels = parallel_depth - 1] {
+                    Builder sub{refs, max_leaf, {}, levels};
+                    sub.nodes.reserve(2 * (end - mid) / max_leaf);
+                    sub.nodes.emplace_back();
+                    sub.build(0, mid, end, right, depth + 1);
+                    return std::move(sub.nodes);
+                });
         }
         const auto left = static_cast<std::uint32_t>(nodes.size());
         nodes.emplace_back();
         const int spent = right_nodes.valid() ? 1 : 0;  // a thread went to the right subtree
         parallel_depth -= spent;
-        build(left, begin, mid, depth + 1);
+        build(left, begin, mid, split.left, depth + 1);
         parallel_depth += spent;
         const auto right = static_cast<std::uint32_t>(nodes.size());
         if (right_nodes.valid()) {
@@ -121,7 +167,7 @@ struct Builder {
             nodes.insert(nodes.end(), sub.begin(), sub.end());
         } else {
             nodes.emplace_back();
-            build(right, mid, end, depth + 1);
+            build(right, mid, end, split.right, depth + 1);
         }
         nodes[node].first = right;
         nodes[node].count = 0;
@@ -138,21 +184,27 @@ int parallel_levels() {
 
 }  // namespace
 
-void Bvh::build(std::span<const Aabb> prim_boxes) {
+void Bvh::build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf) {
     nodes_.clear();
     prims_.clear();
     if (prim_boxes.empty()) return;
-    prims_.resize(prim_boxes.size());
-    std::vector<vec3> centres(prim_boxes.size());
+    std::vector<PrimRef> refs(prim_boxes.size());
+    Bounds bounds;
     for (std::uint32_t i = 0; i < prim_boxes.size(); ++i) {
-        prims_[i] = i;
-        centres[i] = prim_boxes[i].centre();
+        const Aabb& b = prim_boxes[i];
+        refs[i] = {Float4{b.lo.x, b.lo.y, b.lo.z, std::bit_cast<float>(i)},
+                   Float4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
+        bounds.box.grow(refs[i].lo, refs[i].hi);
+        const Float4 c = refs[i].centre2();
+        bounds.centres.grow(c, c);
     }
-    Builder builder{prim_boxes, centres, prims_, {}, parallel_levels()};
-    builder.nodes.reserve(2 * prim_boxes.size());
+    Builder builder{refs, std::max(1u, max_leaf), {}, parallel_levels()};
+    builder.nodes.reserve(2 * prim_boxes.size() / builder.max_leaf + 1);
     builder.nodes.emplace_back();
-    builder.build(0, 0, static_cast<std::uint32_t>(prim_boxes.size()), 0);
+    builder.build(0, 0, static_cast<std::uint32_t>(refs.size()), bounds, 0);
     nodes_ = std::move(builder.nodes);
+    prims_.resize(refs.size());
+    for (std::size_t s = 0; s < refs.size(); ++s) prims_[s] = refs[s].index();
 }
 
 }  // namespace rt

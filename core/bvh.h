@@ -26,7 +26,8 @@ class Bvh {
   public:
     static constexpr int kMaxDepth = 60;  // the traversal stack is sized from this
 
-    void build(std::span<const Aabb> prim_boxes);
+    // Subtrees of at most max_leaf primitives become leaves.
+    void build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf = 2);
 
     bool empty() const { return nodes_.empty(); }
     Aabb bounds() const { return empty() ? Aabb{} : Aabb{nodes_[0].lo, nodes_[0].hi}; }
@@ -63,7 +64,9 @@ template <bool kAnyHit, class HitLeaf>
 bool Bvh::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
     if (nodes_.empty()) return false;
     const vec3 inv_dir = 1.0f / ray.dir;
-    const auto entry = [&](std::uint32_t n) { return slab_entry({nodes_[n].lo, nodes_[n].hi}, ray.origin, inv_dir, t_max); };
+    const auto entry = [&](std::uint32_t n) {
+        return slab_entry({nodes_[n].lo, nodes_[n].hi}, ray.origin, inv_dir, t_max);
+    };
     if (entry(0) == kInfinity) return false;
 
     struct Pending {
@@ -104,16 +107,17 @@ bool Bvh::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) cons
 
 template <bool kAnyHit, class HitPrim>
 bool Bvh::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
-    return traverse_leaves<kAnyHit>(ray, t_max, [&](std::uint32_t first, std::uint32_t count, float& limit) {
-        bool found = false;
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            if (hit(i, limit)) {
-                found = true;
-                if constexpr (kAnyHit) return true;
-            }
-        }
-        return found;
-    });
+    return traverse_leaves<kAnyHit>(ray, t_max,
+                                    [&](std::uint32_t first, std::uint32_t count, float& limit) {
+                                        bool found = false;
+                                        for (std::uint32_t i = first; i < first + count; ++i) {
+                                            if (hit(i, limit)) {
+                                                found = true;
+                                                if constexpr (kAnyHit) return true;
+                                            }
+                                        }
+                                        return found;
+                                    });
 }
 
 }  // namespace rt

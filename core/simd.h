@@ -1,33 +1,69 @@
 #pragma once
-// Four float lanes as GCC/Clang vector extensions: SSE on x86-64, NEON on ARM, without
-// intrinsics. Used by the four-wide BVH's box test and the four-triangle test.
+// SIMD lanes as GCC/Clang vector extensions, without intrinsics in the callers: SSE on
+// x86-64 (AVX where the build targets it), NEON on ARM. Float4 serves the four-triangle
+// test; the wide BVH uses kBvhWidth lanes, 8 where AVX is there to run them, else 4.
 
 #include <cstdint>
 
 #if defined(__SSE__)
-#include <xmmintrin.h>
+#include <immintrin.h>
 #endif
 
 namespace rt {
 
 using Float4 = float __attribute__((vector_size(16)));
 using Mask4 = std::int32_t __attribute__((vector_size(16)));  // a comparison: 0 or -1 per lane
+#if defined(__AVX__)
+using Float8 = float __attribute__((vector_size(32)));
+using Mask8 = std::int32_t __attribute__((vector_size(32)));
+#endif
 
-inline Float4 splat(float x) { return Float4{x, x, x, x}; }
+template <int N>
+struct Lanes;
+template <>
+struct Lanes<4> {
+    using Float = Float4;
+};
+#if defined(__AVX__)
+template <>
+struct Lanes<8> {
+    using Float = Float8;
+};
+#endif
+
+#if defined(__AVX__)
+inline constexpr int kBvhWidth = 8;
+#else
+inline constexpr int kBvhWidth = 4;
+#endif
+
+template <class V>
+V splat(float x) {
+    return V{} + x;
+}
+
 // Lane-wise min and max: where a lane of `a` is NaN, the lane of `b` is taken (SSE's
-// minps/maxps rule, kept by the portable form).
-// bits(): one bit per lane, lane 0 lowest. GCC does not find minps, maxps or movmskps
-// in the portable forms, so on SSE they are spelled out.
+// minps/maxps rule, kept by the portable form). bits(): one bit per lane, lane 0
+// lowest. GCC does not find minps, maxps or movmskps in the portable forms, so where
+// the instructions exist they are spelled out.
 #if defined(__SSE__)
-inline Float4 min4(Float4 a, Float4 b) { return _mm_min_ps(a, b); }
-inline Float4 max4(Float4 a, Float4 b) { return _mm_max_ps(a, b); }
+inline Float4 vmin(Float4 a, Float4 b) { return _mm_min_ps(a, b); }
+inline Float4 vmax(Float4 a, Float4 b) { return _mm_max_ps(a, b); }
 inline unsigned bits(Mask4 m) {
     return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(m)));
 }
 #else
-inline Float4 min4(Float4 a, Float4 b) { return a < b ? a : b; }
-inline Float4 max4(Float4 a, Float4 b) { return a > b ? a : b; }
+inline Float4 vmin(Float4 a, Float4 b) { return a < b ? a : b; }
+inline Float4 vmax(Float4 a, Float4 b) { return a > b ? a : b; }
 inline unsigned bits(Mask4 m) { return (m[0] & 1u) | (m[1] & 2u) | (m[2] & 4u) | (m[3] & 8u); }
+#endif
+
+#if defined(__AVX__)  // without AVX, eight lanes are not used (and would change the ABI)
+inline Float8 vmin(Float8 a, Float8 b) { return _mm256_min_ps(a, b); }
+inline Float8 vmax(Float8 a, Float8 b) { return _mm256_max_ps(a, b); }
+inline unsigned bits(Mask8 m) {
+    return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
+}
 #endif
 
 }  // namespace rt

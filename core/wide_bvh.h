@@ -1,10 +1,11 @@
 #pragma once
-// A four-wide BVH, collapsed from the binary one (core/bvh.h) as in Dammertz et al.,
+// A wide BVH, collapsed from the binary one (core/bvh.h) as in Dammertz et al.,
 // "Shallow Bounding Volume Hierarchies for Fast SIMD Ray Tracing of Incoherent Rays"
-// (2008): a node holds the boxes of up to four children as the lanes of six Float4s,
-// and one slab test checks all four. Subtrees of at most four primitives become one
-// leaf, which a mesh tests with one Triangle4. About a quarter of the nodes of the
-// binary tree and a quarter of the box tests, done four at once.
+// (2008): a node holds the boxes of up to N children as the lanes of six SIMD
+// vectors, and one slab test checks them all. Subtrees of at most four primitives
+// become one leaf, which a mesh tests with one Triangle4. N is 8 where the build
+// targets AVX, else 4 (kBvhWidth, core/simd.h): a shallower tree, fewer dependent
+// node loads per ray.
 
 #include <array>
 #include <cstdint>
@@ -18,17 +19,21 @@
 
 namespace rt {
 
+template <int N>
 struct alignas(64) WideBvhNode {
-    static constexpr std::uint32_t kEmpty = 0;  // count of an unused lane (its box is empty)
+    using Float = typename Lanes<N>::Float;
 
-    Float4 bounds[6];        // lo x, y, z, hi x, y, z; lane = child; unused: lo +inf, hi -inf
-    std::uint32_t child[4];  // interior child: node index; leaf: its first slot
-    std::uint32_t count[4];  // leaf: primitives (1..4); interior child or unused lane: 0
+    Float bounds[6];         // lo x, y, z, hi x, y, z; lane = child; unused: lo +inf, hi -inf
+    std::uint32_t child[N];  // interior child: node index; leaf: its first slot
+    std::uint32_t count[N];  // leaf: primitives (1..4); interior child or unused lane: 0
 };
-static_assert(sizeof(WideBvhNode) == 128, "two cache lines");
+static_assert(sizeof(WideBvhNode<4>) == 128, "whole cache lines");
 
+template <int N>
 class WideBvh {
   public:
+    using Node = WideBvhNode<N>;
+    static constexpr int kWidth = N;
     static constexpr std::uint32_t kLeafSize = 4;
 
     void build(std::span<const Aabb> prim_boxes);
@@ -36,7 +41,7 @@ class WideBvh {
     bool empty() const { return nodes_.empty(); }
     Aabb bounds() const { return bounds_; }
     std::size_t memory_bytes() const {
-        return nodes_.size() * sizeof(WideBvhNode) + prims_.size() * sizeof(std::uint32_t);
+        return nodes_.size() * sizeof(Node) + prims_.size() * sizeof(std::uint32_t);
     }
     std::size_t node_count() const { return nodes_.size(); }
     std::span<const std::uint32_t> order() const { return prims_; }
@@ -49,66 +54,74 @@ class WideBvh {
     bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const;
     template <class F>
     void for_each_leaf(F&& f) const {
-        for (const WideBvhNode& n : nodes_)
-            for (int lane = 0; lane < 4; ++lane)
+        for (const Node& n : nodes_)
+            for (int lane = 0; lane < N; ++lane)
                 if (n.count[lane] != 0) f(n.child[lane], n.count[lane]);
     }
 
   private:
     std::uint32_t collapse(std::span<const BvhNode> binary, std::uint32_t index);
 
-    std::vector<WideBvhNode> nodes_;
+    std::vector<Node> nodes_;
     std::vector<std::uint32_t> prims_;
     std::vector<std::uint32_t> subtree_begin_, subtree_end_;  // build only: slot ranges
     Aabb bounds_;
 };
 
+extern template class WideBvh<4>;
+#if defined(__AVX__)
+extern template class WideBvh<8>;
+#endif
+
 namespace detail {
 
-// A ray set up for slab tests against four boxes: for each axis the near plane (lo if
+// A ray set up for slab tests against N boxes: for each axis the near plane (lo if
 // the direction is positive, hi if negative) and the far one, so no min/max per axis
 // is needed and an unused lane (lo +inf, hi -inf) always misses. As in slab_entry
-// (core/aabb.h), a plane the ray lies in gives NaN, which min4/max4 drop: the order of
+// (core/aabb.h), a plane the ray lies in gives NaN, which vmin/vmax drop: the order of
 // their operands keeps the running bound, so the ray counts as inside that slab.
+template <int N>
 struct BoxRay {
-    Float4 inv[3], origin[3];  // each splat over the lanes
+    using Float = typename Lanes<N>::Float;
+    Float inv[3], origin[3];  // each splat over the lanes
     int near[3], far[3];
 
     explicit BoxRay(const Ray& ray) {
         for (int a = 0; a < 3; ++a) {
             const float inv_a = 1.0f / ray.dir[a];
-            inv[a] = splat(inv_a);
-            origin[a] = splat(ray.origin[a]);
+            inv[a] = splat<Float>(inv_a);
+            origin[a] = splat<Float>(ray.origin[a]);
             near[a] = inv_a < 0.0f ? a + 3 : a;
             far[a] = inv_a < 0.0f ? a : a + 3;
         }
     }
-    // Entry distances of the four children, and a bit per child the ray enters in (0, t_max).
-    unsigned test(const WideBvhNode& n, float t_max, Float4& t_enter) const {
+    // Entry distances of the children, and a bit per child the ray enters in (0, t_max).
+    unsigned test(const WideBvhNode<N>& n, float t_max, Float& t_enter) const {
         // (plane - origin) * inv, not plane * inv - origin * inv: one rounding, as Ize's
         // bound assumes; the second form loses rays at shared box faces.
         const auto plane = [&](int index, int a) { return (n.bounds[index] - origin[a]) * inv[a]; };
-        t_enter =
-            max4(max4(plane(near[0], 0), plane(near[1], 1)), max4(plane(near[2], 2), splat(0.0f)));
+        t_enter = vmax(vmax(plane(near[0], 0), plane(near[1], 1)),
+                       vmax(plane(near[2], 2), splat<Float>(0.0f)));
         // Ize's factor, as in slab_entry (core/aabb.h): grazing rays are not lost.
-        const Float4 t_leave =
-            min4(min4(plane(far[0], 0), plane(far[1], 1)), min4(plane(far[2], 2), splat(t_max))) *
-            1.00000024f;
+        const Float t_leave = vmin(vmin(plane(far[0], 0), plane(far[1], 1)),
+                                   vmin(plane(far[2], 2), splat<Float>(t_max))) *
+                              1.00000024f;
         return bits(t_enter <= t_leave);
     }
 };
 
 }  // namespace detail
 
+template <int N>
 template <bool kAnyHit, class HitLeaf>
-bool WideBvh::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
+bool WideBvh<N>::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
     if (nodes_.empty()) return false;
-    const detail::BoxRay box_ray(ray);
+    const detail::BoxRay<N> box_ray(ray);
     struct Pending {
         std::uint32_t child, count;  // count 0: a node
         float t_enter;               // skipped unvisited if a hit since is nearer
     };
-    std::array<Pending, 3 * Bvh::kMaxDepth + 4> stack;  // a node adds at most three
+    std::array<Pending, (N - 1) * Bvh::kMaxDepth + N> stack;  // a node adds at most N - 1
     int top = 0;
     const auto pop = [&](Pending& next) {
         do {
@@ -125,8 +138,8 @@ bool WideBvh::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) 
         // its order does not matter).
         bool missed = false;
         while (current.count == 0) {
-            const WideBvhNode& node = nodes_[current.child];
-            Float4 t_enter;
+            const Node& node = nodes_[current.child];
+            typename Lanes<N>::Float t_enter;
             unsigned mask = box_ray.test(node, t_max, t_enter);
             if (mask == 0) {
                 missed = true;
@@ -154,8 +167,9 @@ bool WideBvh::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) 
     }
 }
 
+template <int N>
 template <bool kAnyHit, class HitPrim>
-bool WideBvh::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
+bool WideBvh<N>::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
     return traverse_leaves<kAnyHit>(ray, t_max,
                                     [&](std::uint32_t first, std::uint32_t count, float& limit) {
                                         bool found = false;
@@ -168,5 +182,8 @@ bool WideBvh::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
                                         return found;
                                     });
 }
+
+// The width the build's SIMD runs best.
+using DefaultWideBvh = WideBvh<kBvhWidth>;
 
 }  // namespace rt

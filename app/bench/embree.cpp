@@ -5,6 +5,7 @@
 #include <embree3/rtcore.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -15,7 +16,9 @@ namespace {
 class Embree : public Structure {
   public:
     explicit Embree(int threads) {
-        const std::string config = "threads=" + std::to_string(threads);
+        std::string config = "threads=" + std::to_string(threads);
+        if (const char* extra = std::getenv("RTBENCH_EMBREE_CONFIG"))
+            config += std::string(",") + extra;
         device_ = rtcNewDevice(config.c_str());
         if (!device_) throw std::runtime_error("rtcNewDevice failed");
         // Counts what Embree allocates, to report its memory like ours.

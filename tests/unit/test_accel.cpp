@@ -2,6 +2,7 @@
 // tutorial's formula finds: the same primitive, at the same t (to rounding).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -12,6 +13,7 @@
 #include "core/shapes.h"
 #include "core/tessellate.h"
 #include "core/triangle4.h"
+#include "core/wide_bvh.h"
 
 namespace rt {
 
@@ -139,6 +141,85 @@ TEST(Bvh, DegenerateInputsBuild) {
     float t = kInfinity;
     int visited = 0;
     bvh.traverse<false>(Ray{{0.5f, 0.5f, -5}, {0, 0, 1}}, t, [&](std::uint32_t, float&) {
+        ++visited;
+        return false;
+    });
+    EXPECT_EQ(visited, 1000);
+}
+
+// Both widths of the wide BVH, whichever the build uses by default: every box a ray
+// enters is visited, and closest-hit culling keeps the nearest, on boxes of every
+// shape, flat ones included.
+template <class Wide>
+class WideBvhTest : public ::testing::Test {};
+#if defined(__AVX__)
+using WideWidths = ::testing::Types<WideBvh<4>, WideBvh<8>>;
+#else
+using WideWidths = ::testing::Types<WideBvh<4>>;
+#endif
+TYPED_TEST_SUITE(WideBvhTest, WideWidths);
+
+TYPED_TEST(WideBvhTest, VisitsExactlyTheBoxesTheRayEnters) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> size(0.0f, 2.0f);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 5000; ++i) {
+        const vec3 lo = random_point(rng, 20.0f);
+        boxes.push_back({lo, lo + vec3(size(rng), size(rng), i % 7 == 0 ? 0.0f : size(rng))});
+    }
+    TypeParam wide;
+    wide.build(boxes);
+    std::size_t leaf_prims = 0;
+    wide.for_each_leaf([&](std::uint32_t, std::uint32_t count) {
+        EXPECT_LE(count, TypeParam::kLeafSize);
+        leaf_prims += count;
+    });
+    EXPECT_EQ(leaf_prims, boxes.size());
+    for (int i = 0; i < 2000; ++i) {
+        const Ray ray{random_point(rng, 25.0f), random_point(rng, 1.0f)};
+        const vec3 inv = 1.0f / ray.dir;
+        std::vector<std::uint32_t> expected, visited;
+        for (std::uint32_t p = 0; p < boxes.size(); ++p)
+            if (slab_entry(boxes[p], ray.origin, inv, kInfinity) < kInfinity) expected.push_back(p);
+        float t = kInfinity;
+        wide.template traverse<false>(ray, t, [&](std::uint32_t slot, float&) {
+            visited.push_back(wide.order()[slot]);
+            return false;
+        });
+        std::sort(visited.begin(), visited.end());
+        EXPECT_TRUE(std::adjacent_find(visited.begin(), visited.end()) == visited.end())
+            << "ray " << i << " visits a primitive twice";
+        // A leaf holds up to four: its other primitives come along, never one missing.
+        EXPECT_TRUE(std::includes(visited.begin(), visited.end(), expected.begin(), expected.end()))
+            << "ray " << i;
+
+        // Closest hit with culling: treating each box's entry as a hit must end on the
+        // nearest entry of all, though farther subtrees are skipped once it is found.
+        float nearest = kInfinity;
+        for (std::uint32_t p : expected)
+            nearest = std::min(nearest, slab_entry(boxes[p], ray.origin, inv, kInfinity));
+        float limit = kInfinity;
+        wide.template traverse<false>(ray, limit, [&](std::uint32_t slot, float& t_max) {
+            const float t_box = slab_entry(boxes[wide.order()[slot]], ray.origin, inv, t_max);
+            if (!(t_box < t_max)) return false;
+            t_max = t_box;
+            return true;
+        });
+        EXPECT_EQ(limit, nearest) << "ray " << i;
+    }
+}
+
+TYPED_TEST(WideBvhTest, DegenerateInputsBuild) {
+    TypeParam wide;
+    wide.build({});
+    EXPECT_TRUE(wide.empty());
+    float t = kInfinity;
+    EXPECT_FALSE(wide.template traverse<false>(Ray{{0, 0, -5}, {0, 0, 1}}, t,
+                                               [](std::uint32_t, float&) { return true; }));
+    std::vector<Aabb> same(1000, Aabb{vec3(0.0f), vec3(1.0f)});  // one leaf of 1000
+    wide.build(same);
+    int visited = 0;
+    wide.template traverse<false>(Ray{{0.5f, 0.5f, -5}, {0, 0, 1}}, t, [&](std::uint32_t, float&) {
         ++visited;
         return false;
     });
