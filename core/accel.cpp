@@ -22,19 +22,19 @@ std::optional<AccelKind> parse_accel(const std::string& name) {
     return std::nullopt;
 }
 
-void Accel::build(std::span<const Aabb> boxes, AccelKind kind) {
+void Accel::build(std::span<const Aabb> boxes, AccelKind kind, std::uint32_t leaf_size) {
     kind_ = kind;
     order_.clear();
     switch (kind) {
         case AccelKind::kBvh: {
             DefaultWideBvh wide;
-            wide.build(boxes);
+            wide.build(boxes, leaf_size);
             impl_ = std::move(wide);
             return;
         }
         case AccelKind::kBvh2: {
             Bvh bvh;
-            bvh.build(boxes);
+            bvh.build(boxes, leaf_size);
             impl_ = std::move(bvh);
             return;
         }

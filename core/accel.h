@@ -45,7 +45,9 @@ class BruteForce {
 
 class Accel {
   public:
-    void build(std::span<const Aabb> boxes, AccelKind kind);
+    // leaf_size: how many primitives the caller tests at once (4 for a mesh's
+    // Triangle4s), so the BVHs stop splitting there.
+    void build(std::span<const Aabb> boxes, AccelKind kind, std::uint32_t leaf_size = 1);
     AccelKind kind() const { return kind_; }
     std::size_t memory_bytes() const;
     // Slot s of the traversal is primitive order()[s]: callers may keep their data in

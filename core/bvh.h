@@ -26,7 +26,7 @@ class Bvh {
   public:
     static constexpr int kMaxDepth = 60;  // the traversal stack is sized from this
 
-    // Subtrees of at most max_leaf primitives become leaves.
+    // Subtrees of at most max_leaf primitives become leaves (see Accel::build).
     void build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf = 2);
 
     bool empty() const { return nodes_.empty(); }

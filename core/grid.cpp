@@ -22,13 +22,16 @@ void UniformGrid::build(std::span<const Aabb> boxes) {
     extent = bounds_.extent();
     const float cells = kCellsPerPrimitive * static_cast<float>(boxes.size());
     const float per_unit = std::cbrt(cells / (extent.x * extent.y * extent.z));
-    for (int a = 0; a < 3; ++a) res_[a] = std::clamp(static_cast<int>(std::ceil(extent[a] * per_unit)), 1, 512);
+    for (int a = 0; a < 3; ++a)
+        res_[a] = std::clamp(static_cast<int>(std::ceil(extent[a] * per_unit)), 1, 512);
     cell_size_ = extent / vec3(res_);
 
     const auto cell_range = [&](const Aabb& b, glm::ivec3& lo, glm::ivec3& hi) {
         for (int a = 0; a < 3; ++a) {
-            lo[a] = std::clamp(static_cast<int>((b.lo[a] - bounds_.lo[a]) / cell_size_[a]), 0, res_[a] - 1);
-            hi[a] = std::clamp(static_cast<int>((b.hi[a] - bounds_.lo[a]) / cell_size_[a]), 0, res_[a] - 1);
+            lo[a] = std::clamp(static_cast<int>((b.lo[a] - bounds_.lo[a]) / cell_size_[a]), 0,
+                               res_[a] - 1);
+            hi[a] = std::clamp(static_cast<int>((b.hi[a] - bounds_.lo[a]) / cell_size_[a]), 0,
+                               res_[a] - 1);
         }
     };
     // Two passes: count each cell's primitives, then place them (a compressed list).
@@ -36,7 +39,8 @@ void UniformGrid::build(std::span<const Aabb> boxes) {
     for (int pass = 0; pass < 2; ++pass) {
         std::vector<std::uint32_t> fill;
         if (pass == 1) {
-            for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+            for (std::size_t c = 1; c < cell_start_.size(); ++c)
+                cell_start_[c] += cell_start_[c - 1];
             cell_prims_.resize(cell_start_.back());
             fill.assign(cell_start_.begin(), cell_start_.end() - 1);
         }
@@ -47,8 +51,10 @@ void UniformGrid::build(std::span<const Aabb> boxes) {
                 for (int y = lo.y; y <= hi.y; ++y)
                     for (int x = lo.x; x <= hi.x; ++x) {
                         const std::size_t c = cell_index({x, y, z});
-                        if (pass == 0) ++cell_start_[c + 1];
-                        else cell_prims_[fill[c]++] = p;
+                        if (pass == 0)
+                            ++cell_start_[c + 1];
+                        else
+                            cell_prims_[fill[c]++] = p;
                     }
         }
     }

@@ -14,7 +14,7 @@
 namespace rt {
 
 class UniformGrid {
-public:
+  public:
     static constexpr float kCellsPerPrimitive = 2.0f;
 
     void build(std::span<const Aabb> boxes);
@@ -27,7 +27,7 @@ public:
     template <bool kAnyHit, class HitPrim>
     bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const;
 
-private:
+  private:
     std::size_t cell_index(const glm::ivec3& c) const {
         return (static_cast<std::size_t>(c.z) * res_.y + c.y) * res_.x + c.x;
     }
@@ -50,14 +50,19 @@ bool UniformGrid::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
     glm::ivec3 cell, step;
     vec3 t_next, t_delta;
     for (int a = 0; a < 3; ++a) {
-        cell[a] = std::clamp(static_cast<int>((start[a] - bounds_.lo[a]) / cell_size_[a]), 0, res_[a] - 1);
+        cell[a] = std::clamp(static_cast<int>((start[a] - bounds_.lo[a]) / cell_size_[a]), 0,
+                             res_[a] - 1);
         if (ray.dir[a] > 0.0f) {
             step[a] = 1;
-            t_next[a] = (bounds_.lo[a] + static_cast<float>(cell[a] + 1) * cell_size_[a] - ray.origin[a]) * inv_dir[a];
+            t_next[a] =
+                (bounds_.lo[a] + static_cast<float>(cell[a] + 1) * cell_size_[a] - ray.origin[a]) *
+                inv_dir[a];
             t_delta[a] = cell_size_[a] * inv_dir[a];
         } else if (ray.dir[a] < 0.0f) {
             step[a] = -1;
-            t_next[a] = (bounds_.lo[a] + static_cast<float>(cell[a]) * cell_size_[a] - ray.origin[a]) * inv_dir[a];
+            t_next[a] =
+                (bounds_.lo[a] + static_cast<float>(cell[a]) * cell_size_[a] - ray.origin[a]) *
+                inv_dir[a];
             t_delta[a] = -cell_size_[a] * inv_dir[a];
         } else {
             step[a] = 0;
@@ -75,7 +80,8 @@ bool UniformGrid::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
             }
         }
         // The next cell is the one whose boundary the ray crosses first.
-        const int axis = t_next.x < t_next.y ? (t_next.x < t_next.z ? 0 : 2) : (t_next.y < t_next.z ? 1 : 2);
+        const int axis =
+            t_next.x < t_next.y ? (t_next.x < t_next.z ? 0 : 2) : (t_next.y < t_next.z ? 1 : 2);
         // A hit at or before this cell's exit cannot be beaten by a later cell.
         if (t_max <= t_next[axis]) break;
         cell[axis] += step[axis];

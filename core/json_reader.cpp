@@ -87,7 +87,9 @@ nlohmann::json parse_json_file(const std::filesystem::path& path) {
     constexpr std::uintmax_t kMaxSceneBytes = 64u << 20;
     const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
     if (!ec && bytes > kMaxSceneBytes)
-        throw Error(file, "open", "is " + std::to_string(bytes >> 20) + " MiB; scene files are limited to 64 MiB");
+        throw Error(
+            file, "open",
+            "is " + std::to_string(bytes >> 20) + " MiB; scene files are limited to 64 MiB");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(file, "open", "cannot open file (does it exist?)");
     std::ostringstream buffer;

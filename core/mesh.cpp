@@ -16,7 +16,7 @@ void TriangleMesh::build(AccelKind kind) {
         for (int k = 0; k < 3; ++k) boxes[i].grow(positions[triangles[i][k]]);
         bounds_.grow(boxes[i]);
     }
-    accel_.build(boxes, kind);
+    accel_.build(boxes, kind, kTriangle4Lanes);
     const auto order = accel_.order();
     const auto set = [&](Triangle4& pack, int lane, std::uint32_t slot) {
         const glm::uvec3 idx = triangles[order[slot]];

@@ -97,14 +97,16 @@ void check_is_obj_text(const std::filesystem::path& path) {
     std::error_code ec;
     const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
     if (!ec && bytes > kMaxObjBytes)
-        throw Error(path.string(), "open", "is " + std::to_string(bytes >> 20) + " MiB; OBJ files are limited to 2 GiB");
+        throw Error(path.string(), "open",
+                    "is " + std::to_string(bytes >> 20) + " MiB; OBJ files are limited to 2 GiB");
     std::ifstream in(path, std::ios::binary);
     std::string head(64 * 1024, '\0');
     in.read(head.data(), static_cast<std::streamsize>(head.size()));
     head.resize(static_cast<std::size_t>(in.gcount()));
     const auto nul = head.find('\0');
     if (nul != std::string::npos)
-        throw Error(path.string(), "byte " + std::to_string(nul + 1), "a NUL byte: this is not an OBJ text file");
+        throw Error(path.string(), "byte " + std::to_string(nul + 1),
+                    "a NUL byte: this is not an OBJ text file");
 }
 
 // tinyobjloader reads "nan", "inf" or "1e999" as some number without a word, so the

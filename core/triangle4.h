@@ -34,6 +34,8 @@ struct ShearedRay {
     }
 };
 
+inline constexpr std::uint32_t kTriangle4Lanes = 4;
+
 struct Triangle4 {
     Float4 v[3][3];  // v[vertex][axis] lanes; unused lanes are all zero (never hit)
 

@@ -1,5 +1,6 @@
 #include "core/wide_bvh.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace rt {
@@ -29,13 +30,14 @@ WideBvhNode<N> empty_node() {
 }  // namespace
 
 template <int N>
-void WideBvh<N>::build(std::span<const Aabb> prim_boxes) {
+void WideBvh<N>::build(std::span<const Aabb> prim_boxes, std::uint32_t leaf_size) {
     nodes_.clear();
     prims_.clear();
     bounds_ = Aabb{};
     if (prim_boxes.empty()) return;
     Bvh binary;
-    binary.build(prim_boxes, kLeafSize);
+    leaf_size_ = std::max(1u, leaf_size);
+    binary.build(prim_boxes, leaf_size_);
     const std::span<const BvhNode> tree = binary.nodes();
     prims_.assign(binary.order().begin(), binary.order().end());
     bounds_ = binary.bounds();
@@ -57,12 +59,12 @@ void WideBvh<N>::build(std::span<const Aabb> prim_boxes) {
 
 // Makes the wide node for binary node `index` and returns its position: the node's two
 // children are opened up, the largest (by surface area) interior one first, until there
-// are N; a child of at most kLeafSize primitives becomes a leaf lane.
+// are N; a child of at most leaf_size primitives becomes a leaf lane.
 template <int N>
 std::uint32_t WideBvh<N>::collapse(std::span<const BvhNode> tree, std::uint32_t index) {
     const auto size = [&](std::uint32_t i) { return subtree_end_[i] - subtree_begin_[i]; };
     const auto box = [&](std::uint32_t i) { return Aabb{tree[i].lo, tree[i].hi}; };
-    const auto opens = [&](std::uint32_t i) { return !tree[i].is_leaf() && size(i) > kLeafSize; };
+    const auto opens = [&](std::uint32_t i) { return !tree[i].is_leaf() && size(i) > leaf_size_; };
 
     std::array<std::uint32_t, N> children{};
     int n = 1;

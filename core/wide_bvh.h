@@ -34,9 +34,9 @@ class WideBvh {
   public:
     using Node = WideBvhNode<N>;
     static constexpr int kWidth = N;
-    static constexpr std::uint32_t kLeafSize = 4;
-
-    void build(std::span<const Aabb> prim_boxes);
+    // Subtrees of at most leaf_size primitives become leaves: 4 for a mesh (one
+    // Triangle4), 1 for a scene's objects, which are tested one by one.
+    void build(std::span<const Aabb> prim_boxes, std::uint32_t leaf_size);
 
     bool empty() const { return nodes_.empty(); }
     Aabb bounds() const { return bounds_; }
@@ -65,6 +65,7 @@ class WideBvh {
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> prims_;
     std::vector<std::uint32_t> subtree_begin_, subtree_end_;  // build only: slot ranges
+    std::uint32_t leaf_size_ = 1;
     Aabb bounds_;
 };
 

@@ -9,6 +9,7 @@
 #include "app/bench/modes.h"
 #include "core/error.h"
 #include "core/scene_loader.h"
+#include "core/simd.h"
 #include "core/tessellate.h"
 
 namespace rtbench {
@@ -142,12 +143,14 @@ int run_scene(const SceneBenchOptions& o) {
     const rt::Camera camera = loaded.scene.camera.resized(o.width, o.height);
     std::printf(
         "%s: %zu triangles, %dx%d camera, %zu lights, %d threads, median of %d passes after a "
-        "warm-up%s\n",
+        "warm-up; bvh %d-wide, bvh2 binary%s\n",
         o.scene.c_str(), mesh.triangles.size(), o.width, o.height, loaded.scene.lights.size(),
-        o.measure.threads, o.measure.repeats, have_embree() ? "" : " (built without Embree)");
+        o.measure.threads, o.measure.repeats, rt::kBvhWidth,
+        have_embree() ? "" : " (built without Embree)");
 
     std::vector<Entry> entries;
-    for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2, rt::AccelKind::kBvh})
+    for (rt::AccelKind k :
+         {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2, rt::AccelKind::kBvh})
         entries.emplace_back(make_ours(k));
     if (auto embree = make_embree(o.measure.threads)) entries.emplace_back(std::move(embree));
     const auto wanted = [&](const Entry& e) {

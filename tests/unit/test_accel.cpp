@@ -168,10 +168,10 @@ TYPED_TEST(WideBvhTest, VisitsExactlyTheBoxesTheRayEnters) {
         boxes.push_back({lo, lo + vec3(size(rng), size(rng), i % 7 == 0 ? 0.0f : size(rng))});
     }
     TypeParam wide;
-    wide.build(boxes);
+    wide.build(boxes, 4);
     std::size_t leaf_prims = 0;
     wide.for_each_leaf([&](std::uint32_t, std::uint32_t count) {
-        EXPECT_LE(count, TypeParam::kLeafSize);
+        EXPECT_LE(count, 4u);
         leaf_prims += count;
     });
     EXPECT_EQ(leaf_prims, boxes.size());
@@ -211,13 +211,13 @@ TYPED_TEST(WideBvhTest, VisitsExactlyTheBoxesTheRayEnters) {
 
 TYPED_TEST(WideBvhTest, DegenerateInputsBuild) {
     TypeParam wide;
-    wide.build({});
+    wide.build({}, 4);
     EXPECT_TRUE(wide.empty());
     float t = kInfinity;
     EXPECT_FALSE(wide.template traverse<false>(Ray{{0, 0, -5}, {0, 0, 1}}, t,
                                                [](std::uint32_t, float&) { return true; }));
     std::vector<Aabb> same(1000, Aabb{vec3(0.0f), vec3(1.0f)});  // one leaf of 1000
-    wide.build(same);
+    wide.build(same, 4);
     int visited = 0;
     wide.template traverse<false>(Ray{{0.5f, 0.5f, -5}, {0, 0, 1}}, t, [&](std::uint32_t, float&) {
         ++visited;
