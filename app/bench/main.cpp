@@ -27,7 +27,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 256));
     app.add_option("--repeats", repeats, "Timed passes (the median is reported)")
         ->check(CLI::Range(1, 100));
-    app.add_option("--only", only, "Structures to run: brute, grid, bvh, embree (default: all)")
+    app.add_option("--only", only,
+                   "Structures to run: brute, grid, bvh2, bvh, embree (default: all); bvh and a "
+                   "reference (embree, or brute without it) always run")
         ->delimiter(',');
     app.add_flag("--sweep", sweep, "Time per ray against triangle count on a tessellated sphere");
     app.add_option("--csv", csv, "--sweep: the data");

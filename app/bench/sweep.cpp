@@ -76,7 +76,8 @@ int run_sweep(const SweepOptions& o) {
                 primary.t_max.push_back(rt::kInfinity);
             }
         std::vector<std::unique_ptr<Structure>> structures;
-        for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2, rt::AccelKind::kBvh})
+        for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2,
+                                rt::AccelKind::kBvh})
             structures.push_back(make_ours(k));
         if (auto embree = make_embree(o.measure.threads)) structures.push_back(std::move(embree));
         for (auto& s : structures) {

@@ -11,16 +11,18 @@ check() { cases=$((cases + 1)); local what=$1; shift; if "$@"; then echo "ok   $
 "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --json "$out/teapot.json" >"$out/teapot.log" 2>&1
 check "structures agree on the teapot (exit 0)" test $? -eq 0
 check "  ... and say so" grep -q "every structure agrees" "$out/teapot.log"
-for key in brute grid bvh build_seconds memory_bytes primary shadow secondary mrays_per_s checks; do
+for key in brute grid bvh2 bvh build_seconds memory_bytes primary shadow secondary mrays_per_s checks; do
     check "  ... JSON has \"$key\"" grep -q "\"$key\"" "$out/teapot.json"
 done
 RTBENCH_FAULT=grid "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only grid,brute >"$out/fault.log" 2>&1
 check "a structure giving wrong answers makes rtbench fail (exit 1)" test $? -eq 1
 check "  ... naming it" grep -q "WRONG: grid" "$out/fault.log"
+RTBENCH_FAULT=bvh "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only bvh >"$out/fault_bvh.log" 2>&1
+check "  ... the wide BVH too" grep -q "WRONG: bvh" "$out/fault_bvh.log"
 
 "$rtbench" --sweep --counts 200,2000 --repeats 1 --csv "$out/sweep.csv" --png "$out/sweep.png" >"$out/sweep.log" 2>&1
 check "sweep runs" test $? -eq 0
-check "  ... and writes a row per count and structure" test "$(grep -c '^[0-9]' "$out/sweep.csv")" -ge 6
+check "  ... and writes a row per count and structure" test "$(grep -c '^[0-9]' "$out/sweep.csv")" -ge 8
 check "  ... and a plot" test -s "$out/sweep.png"
 
 "$rtbench" --item-buffer "$assets/scenes/tutorial.json" --size 160x120 --repeats 1 >"$out/ib.log" 2>&1
