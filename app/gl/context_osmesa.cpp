@@ -40,7 +40,11 @@ class OsmesaContext : public Context {
         }
     }
 
-    ~OsmesaContext() override { OSMesaDestroyContext(context_); }
+    ~OsmesaContext() override {
+        // Released first: a context destroyed while current keeps its framebuffer.
+        OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+        OSMesaDestroyContext(context_);
+    }
 
   private:
     OSMesaContext context_ = nullptr;
