@@ -105,19 +105,25 @@ bool Bvh::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) cons
     return found;
 }
 
+// A primitive at a time: `hit(slot, t_max)` for each slot of a leaf, in order; with
+// kAnyHit the leaf stops at its first hit. Both BVHs' traverse() use it.
+template <bool kAnyHit, class HitPrim>
+auto each_primitive(HitPrim& hit) {
+    return [&hit](std::uint32_t first, std::uint32_t count, float& t_max) {
+        bool found = false;
+        for (std::uint32_t slot = first; slot < first + count; ++slot) {
+            if (hit(slot, t_max)) {
+                found = true;
+                if constexpr (kAnyHit) return true;
+            }
+        }
+        return found;
+    };
+}
+
 template <bool kAnyHit, class HitPrim>
 bool Bvh::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
-    return traverse_leaves<kAnyHit>(ray, t_max,
-                                    [&](std::uint32_t first, std::uint32_t count, float& limit) {
-                                        bool found = false;
-                                        for (std::uint32_t i = first; i < first + count; ++i) {
-                                            if (hit(i, limit)) {
-                                                found = true;
-                                                if constexpr (kAnyHit) return true;
-                                            }
-                                        }
-                                        return found;
-                                    });
+    return traverse_leaves<kAnyHit>(ray, t_max, each_primitive<kAnyHit>(hit));
 }
 
 }  // namespace rt

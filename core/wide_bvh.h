@@ -171,17 +171,7 @@ bool WideBvh<N>::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_lea
 template <int N>
 template <bool kAnyHit, class HitPrim>
 bool WideBvh<N>::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
-    return traverse_leaves<kAnyHit>(ray, t_max,
-                                    [&](std::uint32_t first, std::uint32_t count, float& limit) {
-                                        bool found = false;
-                                        for (std::uint32_t i = first; i < first + count; ++i) {
-                                            if (hit(i, limit)) {
-                                                found = true;
-                                                if constexpr (kAnyHit) return true;
-                                            }
-                                        }
-                                        return found;
-                                    });
+    return traverse_leaves<kAnyHit>(ray, t_max, each_primitive<kAnyHit>(hit));
 }
 
 // The width the build's SIMD runs best.
