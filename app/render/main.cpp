@@ -1,6 +1,7 @@
 // rtrender: renders a scene headless, ray traced and/or through OpenGL.
 //   rtrender SCENE [-o OUT.png|OUT.exr] [--mode trace|raster|both|itembuffer] [--gl egl|osmesa]
-//            [--item-buffer on|off] [--accel bvh|bvh2|grid|brute] [--size WxH] [--threads N] [--max-depth N] [--no-shadows]
+//            [--item-buffer on|off] [--accel bvh|bvh2|grid|brute] [--size WxH] [--threads N]
+//            [--max-depth N] [--no-shadows]
 //            [--no-reflections] [--no-refractions] [--stats FILE.json] [--quiet]
 
 #include <iostream>
@@ -23,7 +24,8 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
         ->check(CLI::IsMember({"trace", "raster", "both", "itembuffer"}));
     app.add_option("--gl", o.gl, "OpenGL context: egl, osmesa, or auto (EGL, then OSMesa)")
         ->check(CLI::IsMember({"egl", "osmesa", "auto"}));
-    app.add_option("--accel", o.accel, "Acceleration structure: bvh (default), grid or brute")
+    app.add_option("--accel", o.accel,
+                   "Acceleration structure: bvh (wide, default), bvh2 (binary), grid or brute")
         ->check(CLI::IsMember({"bvh", "bvh2", "grid", "brute"}));
     app.add_option("--item-buffer", item_buffer,
                    "Primary hits from the raster item buffer: on or off")

@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
     app.add_option("--view", view, "First view")
         ->check(CLI::IsMember({"raster", "trace", "split", "diff", "itembuffer"}));
     app.add_option("--save-dir", save_dir, "Where F12 saves images (default: here)");
-    app.add_option("--accel", accel, "Acceleration structure: bvh (default), grid or brute")
+    app.add_option("--accel", accel,
+                   "Acceleration structure: bvh (wide, default), bvh2 (binary), grid or brute")
         ->check(CLI::IsMember({"bvh", "bvh2", "grid", "brute"}));
     try {
         app.parse(argc, argv);
