@@ -58,6 +58,8 @@ inline Float4 vmax(Float4 a, Float4 b) { return a > b ? a : b; }
 inline unsigned bits(Mask4 m) { return (m[0] & 1u) | (m[1] & 2u) | (m[2] & 4u) | (m[3] & 8u); }
 #endif
 
+inline Float4 vabs(Float4 a) { return vmax(a, -a); }
+
 #if defined(__AVX__)  // without AVX, eight lanes are not used (and would change the ABI)
 inline Float8 vmin(Float8 a, Float8 b) { return _mm256_min_ps(a, b); }
 inline Float8 vmax(Float8 a, Float8 b) { return _mm256_max_ps(a, b); }

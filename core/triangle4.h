@@ -68,7 +68,22 @@ inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r, float t
     Triangle4Hit best;
     if (bits(inside) == 0) return best;  // most leaf tests end here, before any division
     const Float4 t = r.sz * (u * az + v * bz + w * cz) / det;
-    for (unsigned mask = bits(inside & (t > 0.0f) & (t < t_max)); mask != 0; mask &= mask - 1) {
+    // Not t > 0 but t beyond its own rounding error (Pharr, Jakob and Humphreys, PBR 3rd
+    // ed., 3.9.6): the error grows with the triangle's size, so a ray leaving a large
+    // triangle, offset from it by a little (offset_ray_origin), could otherwise hit the
+    // triangle itself just in front of its origin: acne on big walls.
+    const auto gamma = [](float n) { return n * 0x1p-24f / (1.0f - n * 0x1p-24f); };
+    const auto max3 = [](Float4 a, Float4 b, Float4 c) {
+        return vmax(vmax(vabs(a), vabs(b)), vabs(c));
+    };
+    const Float4 x_max = max3(ax, bx, cx), y_max = max3(ay, by, cy);
+    const Float4 z_max = max3(az, bz, cz) * std::fabs(r.sz);
+    const Float4 delta_x = gamma(5) * (x_max + z_max), delta_y = gamma(5) * (y_max + z_max);
+    const Float4 delta_e = 2.0f * (gamma(2) * x_max * y_max + delta_y * x_max + delta_x * y_max);
+    const Float4 e_max = max3(u, v, w);
+    const Float4 delta_t =
+        3.0f * (gamma(3) * e_max * z_max + delta_e * z_max + gamma(3) * z_max * e_max) / vabs(det);
+    for (unsigned mask = bits(inside & (t > delta_t) & (t < t_max)); mask != 0; mask &= mask - 1) {
         const int lane = __builtin_ctz(mask);
         if (t[lane] < best.t) best = {lane, t[lane], 0.0f, 0.0f};
     }
