@@ -67,11 +67,15 @@ inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r, float t
     const Mask4 inside = same_sign & (det != 0.0f);
     Triangle4Hit best;
     if (bits(inside) == 0) return best;  // most leaf tests end here, before any division
-    const Float4 t = r.sz * (u * az + v * bz + w * cz) / det;
-    // Not t > 0 but t beyond its own rounding error (Pharr, Jakob and Humphreys, PBR 3rd
-    // ed., 3.9.6): the error grows with the triangle's size, so a ray leaving a large
-    // triangle, offset from it by a little (offset_ray_origin), could otherwise hit the
-    // triangle itself just in front of its origin: acne on big walls.
+    const Float4 t_scaled = r.sz * (u * az + v * bz + w * cz);  // t * det
+    const Float4 t = t_scaled / det;
+    unsigned candidates = bits(inside & (t > 0.0f) & (t < t_max));
+    if (candidates == 0) return best;
+    // Not only t > 0 but t beyond its own rounding error (Pharr, Jakob and Humphreys,
+    // PBR 3rd ed., 3.9.6): the error grows with the triangle's size, so a ray leaving a
+    // large triangle, offset from it by a little (offset_ray_origin), could otherwise hit
+    // the triangle itself just in front of its origin: acne on big walls. Compared as
+    // |t * det| against the bound times |det|, so without a division.
     const auto gamma = [](float n) { return n * 0x1p-24f / (1.0f - n * 0x1p-24f); };
     const auto max3 = [](Float4 a, Float4 b, Float4 c) {
         return vmax(vmax(vabs(a), vabs(b)), vabs(c));
@@ -81,10 +85,11 @@ inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r, float t
     const Float4 delta_x = gamma(5) * (x_max + z_max), delta_y = gamma(5) * (y_max + z_max);
     const Float4 delta_e = 2.0f * (gamma(2) * x_max * y_max + delta_y * x_max + delta_x * y_max);
     const Float4 e_max = max3(u, v, w);
-    const Float4 delta_t =
-        3.0f * (gamma(3) * e_max * z_max + delta_e * z_max + gamma(3) * z_max * e_max) / vabs(det);
-    for (unsigned mask = bits(inside & (t > delta_t) & (t < t_max)); mask != 0; mask &= mask - 1) {
-        const int lane = __builtin_ctz(mask);
+    const Float4 delta_t_det =
+        3.0f * (gamma(3) * e_max * z_max + delta_e * z_max + gamma(3) * z_max * e_max);
+    candidates &= bits(vabs(t_scaled) > delta_t_det);
+    for (; candidates != 0; candidates &= candidates - 1) {
+        const int lane = __builtin_ctz(candidates);
         if (t[lane] < best.t) best = {lane, t[lane], 0.0f, 0.0f};
     }
     if (best.lane >= 0) {
