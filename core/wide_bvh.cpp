@@ -27,6 +27,66 @@ WideBvhNode<N> empty_node() {
     return node;
 }
 
+// Collapses a binary BVH into wide nodes (build only): each wide node opens its binary
+// node's children, the largest (by surface area) interior one first, until there are N;
+// a child of at most leaf_size primitives becomes a leaf lane.
+template <int N>
+class Collapser {
+  public:
+    Collapser(std::span<const BvhNode> tree, std::uint32_t leaf_size,
+              std::vector<WideBvhNode<N>>& out)
+        : tree_(tree), leaf_size_(leaf_size), out_(out), begin_(tree.size()), end_(tree.size()) {
+        // Each binary node's slot range: children come after their parent, so one pass
+        // from the back sees both children first.
+        for (std::size_t i = tree.size(); i-- > 0;) {
+            const BvhNode& n = tree[i];
+            begin_[i] = n.is_leaf() ? n.first : begin_[i + 1];
+            end_[i] = n.is_leaf() ? n.first + n.count : end_[n.first];
+        }
+    }
+
+    // Makes the wide node for binary node `index`; returns its position in `out`.
+    std::uint32_t collapse(std::uint32_t index) {
+        std::array<std::uint32_t, N> children{};
+        int n = 1;
+        children[0] = index;
+        while (n < N) {
+            int widest = -1;
+            for (int k = 0; k < n; ++k)
+                if (opens(children[k]) && (widest < 0 || box(children[k]).half_area() >
+                                                             box(children[widest]).half_area()))
+                    widest = k;
+            if (widest < 0) break;
+            const std::uint32_t parent = children[widest];
+            children[widest] = parent + 1;  // the left child follows its parent
+            children[n++] = tree_[parent].first;
+        }
+
+        const auto at = static_cast<std::uint32_t>(out_.size());
+        out_.push_back(empty_node<N>());
+        for (int k = 0; k < n; ++k) {
+            const std::uint32_t c = children[k];
+            const bool leaf = !opens(c);
+            const std::uint32_t target = leaf ? begin_[c] : collapse(c);
+            WideBvhNode<N>& node = out_[at];  // collapse() may have moved the array
+            set_lane(node, k, box(c));
+            node.child[k] = target;
+            node.count[k] = leaf ? size(c) : 0;
+        }
+        return at;
+    }
+
+  private:
+    std::uint32_t size(std::uint32_t i) const { return end_[i] - begin_[i]; }
+    Aabb box(std::uint32_t i) const { return {tree_[i].lo, tree_[i].hi}; }
+    bool opens(std::uint32_t i) const { return !tree_[i].is_leaf() && size(i) > leaf_size_; }
+
+    std::span<const BvhNode> tree_;
+    std::uint32_t leaf_size_;
+    std::vector<WideBvhNode<N>>& out_;
+    std::vector<std::uint32_t> begin_, end_;  // each binary node's slot range
+};
+
 }  // namespace
 
 template <int N>
@@ -35,64 +95,13 @@ void WideBvh<N>::build(std::span<const Aabb> prim_boxes, std::uint32_t leaf_size
     prims_.clear();
     bounds_ = Aabb{};
     if (prim_boxes.empty()) return;
+    leaf_size = std::max(1u, leaf_size);
     Bvh binary;
-    leaf_size_ = std::max(1u, leaf_size);
-    binary.build(prim_boxes, leaf_size_);
-    const std::span<const BvhNode> tree = binary.nodes();
+    binary.build(prim_boxes, leaf_size);
     prims_.assign(binary.order().begin(), binary.order().end());
     bounds_ = binary.bounds();
-
-    // Each binary node's slot range: children come after their parent, so one pass
-    // from the back sees both children first.
-    subtree_begin_.resize(tree.size());
-    subtree_end_.resize(tree.size());
-    for (std::size_t i = tree.size(); i-- > 0;) {
-        const BvhNode& n = tree[i];
-        subtree_begin_[i] = n.is_leaf() ? n.first : subtree_begin_[i + 1];
-        subtree_end_[i] = n.is_leaf() ? n.first + n.count : subtree_end_[n.first];
-    }
-    nodes_.reserve(tree.size() / (N - 1) + 1);
-    collapse(tree, 0);
-    subtree_begin_ = {};
-    subtree_end_ = {};
-}
-
-// Makes the wide node for binary node `index` and returns its position: the node's two
-// children are opened up, the largest (by surface area) interior one first, until there
-// are N; a child of at most leaf_size primitives becomes a leaf lane.
-template <int N>
-std::uint32_t WideBvh<N>::collapse(std::span<const BvhNode> tree, std::uint32_t index) {
-    const auto size = [&](std::uint32_t i) { return subtree_end_[i] - subtree_begin_[i]; };
-    const auto box = [&](std::uint32_t i) { return Aabb{tree[i].lo, tree[i].hi}; };
-    const auto opens = [&](std::uint32_t i) { return !tree[i].is_leaf() && size(i) > leaf_size_; };
-
-    std::array<std::uint32_t, N> children{};
-    int n = 1;
-    children[0] = index;
-    while (n < N) {
-        int widest = -1;
-        for (int k = 0; k < n; ++k)
-            if (opens(children[k]) &&
-                (widest < 0 || box(children[k]).half_area() > box(children[widest]).half_area()))
-                widest = k;
-        if (widest < 0) break;
-        const std::uint32_t parent = children[widest];
-        children[widest] = parent + 1;  // the left child follows its parent
-        children[n++] = tree[parent].first;
-    }
-
-    const auto at = static_cast<std::uint32_t>(nodes_.size());
-    nodes_.push_back(empty_node<N>());
-    for (int k = 0; k < n; ++k) {
-        const std::uint32_t c = children[k];
-        const bool leaf = !opens(c);
-        const std::uint32_t target = leaf ? subtree_begin_[c] : collapse(tree, c);
-        Node& node = nodes_[at];  // collapse() may have moved the array
-        set_lane(node, k, box(c));
-        node.child[k] = target;
-        node.count[k] = leaf ? size(c) : 0;
-    }
-    return at;
+    nodes_.reserve(binary.node_count() / (N - 1) + 1);
+    Collapser<N>(binary.nodes(), leaf_size, nodes_).collapse(0);
 }
 
 template class WideBvh<4>;

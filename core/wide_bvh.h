@@ -60,12 +60,8 @@ class WideBvh {
     }
 
   private:
-    std::uint32_t collapse(std::span<const BvhNode> binary, std::uint32_t index);
-
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> prims_;
-    std::vector<std::uint32_t> subtree_begin_, subtree_end_;  // build only: slot ranges
-    std::uint32_t leaf_size_ = 1;
     Aabb bounds_;
 };
 
