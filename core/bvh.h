@@ -62,7 +62,7 @@ class Bvh {
 
 template <bool kAnyHit, class HitLeaf>
 bool Bvh::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
-    if (nodes_.empty()) return false;
+    if (nodes_.empty() || !finite_ray(ray)) return false;
     const vec3 inv_dir = 1.0f / ray.dir;
     const auto entry = [&](std::uint32_t n) {
         return slab_entry({nodes_[n].lo, nodes_[n].hi}, ray.origin, inv_dir, t_max);

@@ -194,13 +194,20 @@ std::vector<JsonValue> JsonValue::elements(std::size_t min_size, std::size_t max
     return out;
 }
 
-float JsonValue::number() const {
+double JsonValue::number_double() const {
     if (!json_->is_number()) fail("expected a number, got " + describe_type());
     const double x = json_->get<double>();
     if (!std::isfinite(x)) fail("is not a finite number");
     if (std::fabs(x) > std::numeric_limits<float>::max())
         fail("is too large (" + json_->dump() + ")");
-    return static_cast<float>(x);
+    return x;
+}
+
+float JsonValue::number() const { return static_cast<float>(number_double()); }
+
+glm::dvec3 JsonValue::dvector3() const {
+    const auto e = elements(3, 3);
+    return {e[0].number_double(), e[1].number_double(), e[2].number_double()};
 }
 
 float JsonValue::number_at_least(float lo) const {

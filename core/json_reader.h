@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
 #include "core/ray.h"
@@ -50,6 +51,8 @@ class JsonValue {
     bool boolean() const;
     std::string string() const;
     vec3 vector3() const;  // [x, y, z]
+    double number_double() const;  // as number(), without the rounding to float
+    glm::dvec3 dvector3() const;   // as vector3(), without the rounding to float
     vec3 colour() const;   // [r, g, b] or one grey number, each >= 0
 
     bool is_array() const { return json_->is_array(); }

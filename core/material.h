@@ -16,9 +16,23 @@ struct Checker {
     vec3 colour_b{0.0f};
     float scale = 1.0f;
 
+    // Each cell's parity in float, f - 2 floor(f / 2), so it is defined at any coordinate
+    // (past 2^24 every float is even) and phong.frag computes the very same.
     vec3 at(const vec3& p) const {
-        const auto cell = [&](float x) { return static_cast<long long>(std::floor(x / scale)); };
-        return ((cell(p.x) + cell(p.y) + cell(p.z)) & 1) == 0 ? colour_a : colour_b;
+        const auto parity = [&](float x) {
+            const float f = std::floor(x / scale);
+            return f - 2.0f * std::floor(0.5f * f);
+        };
+        const float sum = parity(p.x) + parity(p.y) + parity(p.z);
+        return sum == 0.0f || sum == 2.0f ? colour_a : colour_b;
+    }
+    // A shift of the pattern's point by `offset` (exact, in double), folded into one
+    // period (2 scale) per axis so that float can add it to a small point without loss:
+    // at(p + shift(o)) is at(p + o) computed exactly.
+    vec3 shift(const glm::dvec3& offset) const {
+        const double period = 2.0 * static_cast<double>(scale);
+        return vec3(std::fmod(offset.x, period), std::fmod(offset.y, period),
+                    std::fmod(offset.z, period));
     }
 };
 

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
+#include <map>
 #include <sstream>
 
 #include <tiny_obj_loader.h>
@@ -13,7 +15,9 @@
 namespace rt {
 namespace {
 
-vec3 to_vec3(const tinyobj::real_t* v) { return {v[0], v[1], v[2]}; }
+vec3 to_vec3(const tinyobj::real_t* v) {
+    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
 
 bool finite(const vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -37,24 +41,41 @@ void add_warnings(const std::string& file, const std::string& text, std::vector<
         if (!line.empty()) out.push_back(file + ": warning: " + line);
 }
 
-void copy_positions(const std::string& file, const tinyobj::attrib_t& attrib, TriangleMesh& mesh) {
+// The centre of the box around the vertices that faces use, in double precision.
+glm::dvec3 used_centre(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes) {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    const auto vertex_count = static_cast<int>(attrib.vertices.size() / 3);
+    for (const tinyobj::shape_t& shape : shapes)
+        for (const tinyobj::index_t& corner : shape.mesh.indices) {
+            if (corner.vertex_index < 0 || corner.vertex_index >= vertex_count) continue;
+            const double* v = &attrib.vertices[3 * static_cast<std::size_t>(corner.vertex_index)];
+            lo = glm::min(lo, glm::dvec3(v[0], v[1], v[2]));
+            hi = glm::max(hi, glm::dvec3(v[0], v[1], v[2]));
+        }
+    return lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+}
+
+// Positions relative to `origin`, the difference taken in double precision.
+void copy_positions(const std::string& file, const tinyobj::attrib_t& attrib,
+                    const glm::dvec3& origin, TriangleMesh& mesh) {
     mesh.positions.resize(attrib.vertices.size() / 3);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        mesh.positions[i] = to_vec3(&attrib.vertices[3 * i]);
+        const double* v = &attrib.vertices[3 * i];
+        mesh.positions[i] = vec3(glm::dvec3(v[0], v[1], v[2]) - origin);
         if (!finite(mesh.positions[i]))
             throw Error(file, "vertex " + std::to_string(i + 1),
-                        "coordinate is not a finite number");
+                        "coordinate is not a finite number in single precision");
     }
 }
 
 // Copies the triangles, checking every index; returns whether every corner had a usable normal.
-bool copy_triangles(const std::string& file, const tinyobj::ObjReader& reader, TriangleMesh& mesh) {
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+bool copy_triangles(const std::string& file, const tinyobj::attrib_t& attrib,
+                    const std::vector<tinyobj::shape_t>& shapes, TriangleMesh& mesh) {
     const auto vertex_count = static_cast<long long>(mesh.positions.size());
     const auto normal_count = static_cast<long long>(attrib.normals.size() / 3);
     bool all_normals = true;
     std::vector<vec3> normals;
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    for (const tinyobj::shape_t& shape : shapes) {
         const auto& idx = shape.mesh.indices;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
             const std::string where =
@@ -90,9 +111,9 @@ bool copy_triangles(const std::string& file, const tinyobj::ObjReader& reader, T
     return all_normals;
 }
 
-// Before tinyobjloader reads it: not too large, and text (a NUL byte in the first 64 KiB
-// means it is not an OBJ file), so garbage is refused at once rather than parsed.
-void check_is_obj_text(const std::filesystem::path& path) {
+// The whole file, refused at once if it is too large or not text (a NUL byte in the
+// first 64 KiB), so garbage is not parsed.
+std::string read_obj_text(const std::filesystem::path& path) {
     constexpr std::uintmax_t kMaxObjBytes = 2ull << 30;
     std::error_code ec;
     const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
@@ -100,65 +121,150 @@ void check_is_obj_text(const std::filesystem::path& path) {
         throw Error(path.string(), "open",
                     "is " + std::to_string(bytes >> 20) + " MiB; OBJ files are limited to 2 GiB");
     std::ifstream in(path, std::ios::binary);
-    std::string head(64 * 1024, '\0');
-    in.read(head.data(), static_cast<std::streamsize>(head.size()));
-    head.resize(static_cast<std::size_t>(in.gcount()));
-    const auto nul = head.find('\0');
-    if (nul != std::string::npos)
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto nul = text.find('\0');
+    if (nul != std::string::npos && nul < 64 * 1024)
         throw Error(path.string(), "byte " + std::to_string(nul + 1),
                     "a NUL byte: this is not an OBJ text file");
+    return text;
 }
 
-// tinyobjloader reads "nan", "inf" or "1e999" as some number without a word, so the
-// vertex lines are checked first: a coordinate must be a finite float.
-void check_vertex_lines(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string line;
-    for (std::size_t number = 1; std::getline(in, line); ++number) {
-        if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
-        std::istringstream tokens(line.substr(2));
+// What the line-by-line check counted.
+struct ObjCounts {
+    long long vertices = 0, lines = 0, points = 0;
+};
+
+bool is_element(std::string_view line, char kind) {
+    return line.size() >= 2 && line[0] == kind && (line[1] == ' ' || line[1] == '\t');
+}
+
+// Before tinyobjloader reads the file, whose messages carry no usable location: every
+// vertex coordinate a finite number ("nan", "inf" and "1e999" would become some number
+// without a word), and every face of at least three vertices whose indices name a vertex.
+ObjCounts check_obj_lines(const std::string& file, std::string_view text) {
+    ObjCounts counts;
+    long long max_index = 0, max_index_line = 0;
+    std::size_t number = 0;
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t eol = std::min(text.find('\n', at), text.size());
+        const std::string_view line = text.substr(at, eol - at);
+        at = eol + 1;
+        ++number;
+        const auto fail = [&](const std::string& what) {
+            throw Error(file, "line " + std::to_string(number), what);
+        };
+        std::istringstream tokens{std::string(line.size() >= 2 ? line.substr(2) : "")};
         std::string token;
-        for (int k = 0; k < 3 && tokens >> token; ++k) {
-            float value = 0.0f;
-            const auto [end, ec] =
-                std::from_chars(token.data(), token.data() + token.size(), value);
-            if (ec != std::errc{} || end != token.data() + token.size() || !std::isfinite(value))
-                throw Error(path.string(), "line " + std::to_string(number),
-                            "vertex coordinate \"" + token + "\" is not a finite number");
+        if (is_element(line, 'v')) {
+            ++counts.vertices;
+            for (int k = 0; k < 3 && tokens >> token; ++k) {
+                double value = 0.0;
+                const auto [end, ec] =
+                    std::from_chars(token.data(), token.data() + token.size(), value);
+                if (ec != std::errc{} || end != token.data() + token.size() || !std::isfinite(value))
+                    fail("vertex coordinate \"" + token + "\" is not a finite number");
+            }
+        } else if (is_element(line, 'f')) {
+            int corners = 0;
+            for (; tokens >> token; ++corners) {
+                long long index = 0;
+                const char* end = token.data() + token.size();
+                const auto [stop, ec] = std::from_chars(token.data(), end, index);
+                if (ec != std::errc{} || (stop != end && *stop != '/'))
+                    fail("face vertex \"" + token + "\" is not an index");
+                if (index == 0) fail("face index 0 (OBJ indices start at 1)");
+                if (index < 0 && -index > counts.vertices)
+                    fail("relative face index " + std::to_string(index) + " is out of range (" +
+                         std::to_string(counts.vertices) + " vertices defined before it)");
+                if (index > max_index) {
+                    max_index = index;
+                    max_index_line = static_cast<long long>(number);
+                }
+            }
+            if (corners < 3)
+                fail("a face needs at least 3 vertices, this one has " + std::to_string(corners));
+        } else if (is_element(line, 'l')) {
+            ++counts.lines;
+        } else if (is_element(line, 'p')) {
+            ++counts.points;
         }
     }
+    if (max_index > counts.vertices)
+        throw Error(file, "line " + std::to_string(max_index_line),
+                    "face index " + std::to_string(max_index) + " is out of range (the file has " +
+                        std::to_string(counts.vertices) + " vertices)");
+    return counts;
 }
+
+// Reads the MTL files an OBJ names, beside it, skipping a byte-order mark.
+class MtlReader : public tinyobj::MaterialReader {
+  public:
+    MtlReader(std::filesystem::path dir, std::string obj_file)
+        : dir_(std::move(dir)), obj_file_(std::move(obj_file)) {}
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string* warn,
+                    std::string*) override {
+        std::ifstream in(dir_ / name, std::ios::binary);
+        if (!in) {
+            *warn += "material library \"" + name + "\" not found beside the OBJ file\n";
+            return false;
+        }
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::istringstream stream{std::string(skip_utf8_bom(text))};
+        tinyobj::LoadMtl(names, materials, &stream, warn, warn);
+        return true;
+    }
+
+  private:
+    std::filesystem::path dir_;
+    std::string obj_file_;
+};
 
 }  // namespace
 
-ObjData load_obj(const std::filesystem::path& path, float crease_degrees) {
+ObjData load_obj(const std::filesystem::path& path, const ObjOptions& options) {
     const std::string file = path.string();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(file, "open", "cannot open file (does it exist?)");
 
-    check_is_obj_text(path);
-    check_vertex_lines(path);
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    config.mtl_search_path = path.parent_path().string();
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(file, config)) {
-        std::string message = reader.Error();
-        while (!message.empty() && (message.back() == '\n' || message.back() == '\r'))
-            message.pop_back();
-        throw Error(file, "parse", message.empty() ? "not a readable OBJ file" : message);
+    const std::string text = read_obj_text(path);
+    const std::string_view body = skip_utf8_bom(text);
+    const ObjCounts counts = check_obj_lines(file, body);
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warn, err;
+    {
+        std::istringstream stream{std::string(body)};
+        MtlReader mtl(path.parent_path(), file);
+        if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &stream, &mtl, true,
+                              false)) {
+            while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
+            throw Error(file, "parse", err.empty() ? "not a readable OBJ file" : err);
+        }
     }
 
     ObjData data;
     data.mesh.name = path.filename().string();
-    add_warnings(file, reader.Warning(), data.warnings);
-    for (const auto& m : reader.GetMaterials()) data.materials.push_back(from_mtl(m));
-    copy_positions(file, reader.GetAttrib(), data.mesh);
-    if (!copy_triangles(file, reader, data.mesh)) compute_corner_normals(data.mesh, crease_degrees);
+    add_warnings(file, warn, data.warnings);
+    for (const auto& m : materials) data.materials.push_back(from_mtl(m));
+    const glm::dvec3 centre = used_centre(attrib, shapes);
+    if (std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)}) >
+        options.recentre_beyond)
+        data.origin = centre;
+    copy_positions(file, attrib, data.origin, data.mesh);
+    if (!copy_triangles(file, attrib, shapes, data.mesh))
+        compute_corner_normals(data.mesh, options.crease_degrees);
+    if (counts.lines + counts.points > 0)
+        data.warnings.push_back(file + ": warning: " + std::to_string(counts.lines) +
+                                " line and " + std::to_string(counts.points) +
+                                " point elements are not drawn (rtview renders surfaces only)");
     if (data.mesh.triangles.empty())
-        throw Error(file, "faces", "no triangles to render (only points or lines?)");
+        throw Error(file, "faces",
+                    counts.lines + counts.points > 0
+                        ? "no faces, only line or point elements: rtview renders surfaces"
+                        : "no faces: the file defines no surface to render");
     return data;
 }
 

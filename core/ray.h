@@ -22,6 +22,15 @@ struct Ray {
     vec3 at(float t) const { return origin + dir * t; }
 };
 
+// Whether origin and direction are finite numbers. A NaN or infinite ray (a camera
+// framed on collapsed geometry, a degenerate transform) hits nothing: the box tests'
+// NaN handling would otherwise count it as inside every box, unused wide-BVH lanes too.
+inline bool finite_ray(const Ray& r) {
+    float sum = 0.0f;
+    for (int a = 0; a < 3; ++a) sum += r.origin[a] * 0.0f + r.dir[a] * 0.0f;
+    return sum == 0.0f;  // x * 0 is NaN exactly when x is NaN or infinite
+}
+
 // Moves a surface point off the surface along `normal` (pointing to the side the new ray
 // leaves from) by an amount that scales with the point's floating-point precision:
 // a fixed number of ULPs far from the origin, a small absolute step near it

@@ -164,6 +164,7 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
         tangent_frame(pl->normal, t1, t2);
         sp.pattern_point = {glm::dot(p, t1), glm::dot(p, t2), 0.0f};
     }
+    sp.pattern_point += pattern_shift(hit.object, sp.material);
     if (o.transform) {
         p = o.transform->point_to_world(p);
         ng = o.transform->normal_to_world(ng);
@@ -179,6 +180,18 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
     ns = sp.front_face ? ns : -ns;
     sp.normal = glm::dot(ns, sp.geometric_normal) > 0.0f ? ns : sp.geometric_normal;
     return sp;
+}
+
+vec3 Scene::pattern_shift(std::uint32_t object, std::uint32_t material) const {
+    const Object& o = objects[object];
+    const Material& m = materials[material];
+    if (o.transform || !m.checker || origin == glm::dvec3(0.0)) return vec3(0.0f);
+    if (const auto* pl = std::get_if<Plane>(&o.shape)) {
+        vec3 t1, t2;
+        tangent_frame(pl->normal, t1, t2);
+        return m.checker->shift({glm::dot(origin, glm::dvec3(t1)), glm::dot(origin, glm::dvec3(t2)), 0.0});
+    }
+    return m.checker->shift(origin);
 }
 
 Aabb Scene::bounds() const {

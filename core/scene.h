@@ -39,6 +39,10 @@ class Scene {
     Camera camera;
     vec3 background{0.0f};
     vec3 ambient{0.1f};  // the tutorial's I_a
+    // Where the scene's zero lies in the file's world: a loader reads a far-away scene
+    // relative to a point of its own (core/scene_loader.h). Everything here is relative
+    // to it; checker patterns of shapes without a transform are laid in the file's world.
+    glm::dvec3 origin{0.0};
     std::vector<Light> lights;
     std::vector<Material> materials;
     std::vector<TriangleMesh> meshes;
@@ -58,6 +62,10 @@ class Scene {
                              Hit& hit) const;
 
     SurfacePoint surface(const Ray& r, const Hit& hit) const;
+    // What a checker of `material` on object `object` adds to its pattern point so that
+    // the pattern lies where the file put it (Checker::shift of the origin); zero for
+    // objects with a transform, whose pattern lies in their own coordinates.
+    vec3 pattern_shift(std::uint32_t object, std::uint32_t material) const;
 
     Aabb bounds() const;  // of the bounded objects (planes are left out)
     std::size_t triangle_count() const;

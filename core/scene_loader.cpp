@@ -14,6 +14,15 @@ namespace {
 
 constexpr int kMaxResolution = 16384;
 
+// Beyond this distance from the origin (in any coordinate) a scene is read relative to
+// a point of its own: its eye (JSON) or its centre (a bare mesh). Nearer, float's
+// precision is ample and the scene is read as it is, bit for bit.
+constexpr double kFarFromOrigin = 4096.0;
+
+bool far_from_origin(const glm::dvec3& p) {
+    return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kFarFromOrigin;
+}
+
 std::string lower(std::string s) {
     for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return s;
@@ -29,6 +38,12 @@ class JsonSceneReader {
         const JsonValue root(doc, "", file_);
         root.keys(
             {"camera", "resolution", "background", "ambient", "lights", "materials", "objects"});
+        // A scene far from the origin is read relative to its eye, in double precision,
+        // so that float's precision follows the eye (what the rays and the raster see).
+        const glm::dvec3 eye = root["camera"]["eye"].dvector3();
+        if (far_from_origin(eye)) origin_ = eye;
+        out_.origin = origin_;
+        scene_.origin = origin_;
         read_materials(root.find("materials"));
         if (const auto bg = root.find("background")) scene_.background = bg->colour();
         if (const auto amb = root.find("ambient")) scene_.ambient = amb->colour();
@@ -51,7 +66,9 @@ class JsonSceneReader {
     Material read_material(const JsonValue& j, Material m) const;
     std::uint32_t material_index(const JsonValue& j) const;
     void read_object(const JsonValue& j);
-    Shape read_mesh(const JsonValue& j, glm::mat4& normalize);
+    Shape read_mesh(const JsonValue& j, glm::dmat4& normalize);
+    // A position in world coordinates, relative to the scene's origin.
+    vec3 point(const JsonValue& j) const { return vec3(j.dvector3() - origin_); }
     std::uint32_t load_mesh(const JsonValue& file_value);
 
     std::filesystem::path path_;
@@ -60,6 +77,7 @@ class JsonSceneReader {
     Scene& scene_;
     std::map<std::string, std::uint32_t> material_names_;
     std::map<std::filesystem::path, std::uint32_t> mesh_cache_;
+    glm::dvec3 origin_{0.0};  // the file's coordinates of the scene's zero
 };
 
 vec3 unit_vector(const JsonValue& j) {
@@ -71,12 +89,12 @@ vec3 unit_vector(const JsonValue& j) {
 
 Camera JsonSceneReader::read_camera(const JsonValue& j, int cols, int rows) const {
     j.keys({"eye", "look_at", "up", "fov", "u", "v", "n", "W", "H", "N"});
-    const vec3 eye = j["eye"].vector3();
+    const vec3 eye = point(j["eye"]);
     Camera cam;
     if (j.has("look_at")) {
         if (j.has("u") || j.has("v") || j.has("n"))
             j.fail("give either look_at and up, or u, v and n");
-        const vec3 target = j["look_at"].vector3();
+        const vec3 target = point(j["look_at"]);
         if (!(glm::length(target - eye) > 0.0f)) j["look_at"].fail("must differ from eye");
         const vec3 up = j.has("up") ? unit_vector(j["up"]) : vec3(0.0f, 1.0f, 0.0f);
         if (glm::length(glm::cross(up, glm::normalize(target - eye))) < 1e-4f)
@@ -114,7 +132,7 @@ Light JsonSceneReader::read_light(const JsonValue& j) const {
     if (type == "point") {
         j.keys({"type", "position", "color"});
         light.type = Light::Type::kPoint;
-        light.position = j["position"].vector3();
+        light.position = point(j["position"]);
     } else if (type == "directional") {
         j.keys({"type", "direction", "color"});
         light.type = Light::Type::kDirectional;
@@ -173,10 +191,11 @@ std::uint32_t JsonSceneReader::material_index(const JsonValue& j) const {
 }
 
 // Scale, then rotate (x, then y, then z, in degrees), then translate; or a 4x4 matrix
-// given row by row. An array of these applies its elements in order.
-glm::mat4 read_transform(const JsonValue& j) {
+// given row by row. An array of these applies its elements in order. Double precision,
+// so that a far-away translation and the scene's origin cancel exactly.
+glm::dmat4 read_transform(const JsonValue& j) {
     if (j.is_array()) {
-        glm::mat4 m(1.0f);
+        glm::dmat4 m(1.0);
         for (const JsonValue& step : j.elements()) m = read_transform(step) * m;
         return m;
     }
@@ -184,47 +203,55 @@ glm::mat4 read_transform(const JsonValue& j) {
     if (const auto mat = j.find("matrix")) {
         if (j.has("translate") || j.has("rotate") || j.has("scale"))
             j.fail("\"matrix\" cannot be combined with translate, rotate or scale");
-        glm::mat4 m;
+        glm::dmat4 m;
         const auto rows = mat->elements(4, 4);
         for (int r = 0; r < 4; ++r) {
             const auto row = rows[r].elements(4, 4);
-            for (int c = 0; c < 4; ++c) m[c][r] = row[c].number();
+            for (int c = 0; c < 4; ++c) m[c][r] = row[c].number_double();
         }
         return m;
     }
-    glm::mat4 m(1.0f);
+    glm::dmat4 m(1.0);
     if (const auto s = j.find("scale"))
-        m = glm::scale(glm::mat4(1.0f), s->is_number() ? vec3(s->number()) : s->vector3());
+        m = glm::scale(glm::dmat4(1.0), s->is_number() ? glm::dvec3(s->number_double()) : s->dvector3());
     if (const auto r = j.find("rotate")) {
-        const vec3 deg = r->vector3();
+        const glm::dvec3 deg = r->dvector3();
         for (int axis = 0; axis < 3; ++axis) {
-            vec3 unit(0.0f);
-            unit[axis] = 1.0f;
-            m = glm::rotate(glm::mat4(1.0f), glm::radians(deg[axis]), unit) * m;
+            glm::dvec3 unit(0.0);
+            unit[axis] = 1.0;
+            m = glm::rotate(glm::dmat4(1.0), glm::radians(deg[axis]), unit) * m;
         }
     }
-    if (const auto t = j.find("translate")) m = glm::translate(glm::mat4(1.0f), t->vector3()) * m;
+    if (const auto t = j.find("translate")) m = glm::translate(glm::dmat4(1.0), t->dvector3()) * m;
     return m;
 }
 
 void JsonSceneReader::read_object(const JsonValue& j) {
     const std::string type = j["type"].string();
     Object o;
-    glm::mat4 pre(1.0f);  // applied before the object's own transform (mesh normalisation)
+    glm::dmat4 pre(1.0);  // applied before the object's own transform (mesh normalisation)
+    // A shape with a transform is given in its own coordinates, which the transform
+    // places; one without is given in world coordinates, taken relative to the origin.
+    // A mesh's file is shared, so it is always placed by a transform.
+    const bool placed = j.has("transform") || type == "mesh";
+    const auto position = [&](const JsonValue& v) { return placed ? v.vector3() : point(v); };
     if (type == "sphere") {
         j.keys({"type", "name", "material", "transform", "center", "radius"});
-        o.shape = Sphere{j.has("center") ? j["center"].vector3() : vec3(0.0f),
+        o.shape = Sphere{j.has("center") ? position(j["center"]) : vec3(placed ? glm::dvec3(0.0) : -origin_),
                          j.has("radius") ? j["radius"].number_above(0.0f) : 1.0f};
     } else if (type == "plane") {
         j.keys({"type", "name", "material", "transform", "normal", "offset", "point"});
         const vec3 n = unit_vector(j["normal"]);
         if (j.has("offset") && j.has("point")) j.fail("give either offset or point, not both");
-        o.shape = Plane{n, j.has("point") ? glm::dot(j["point"].vector3(), n)
-                                          : (j.has("offset") ? j["offset"].number() : 0.0f)};
+        // n . x = offset, and with x = x' + origin: n . x' = offset - n . origin.
+        const glm::dvec3 shift = placed ? glm::dvec3(0.0) : origin_;
+        const double offset = j.has("point") ? glm::dot(j["point"].dvector3(), glm::dvec3(n))
+                                             : (j.has("offset") ? j["offset"].number_double() : 0.0);
+        o.shape = Plane{n, static_cast<float>(offset - glm::dot(shift, glm::dvec3(n)))};
     } else if (type == "triangle") {
         j.keys({"type", "name", "material", "transform", "vertices"});
         const auto v = j["vertices"].elements(3, 3);
-        const Triangle tri{v[0].vector3(), v[1].vector3(), v[2].vector3()};
+        const Triangle tri{position(v[0]), position(v[1]), position(v[2])};
         if (!(glm::length(glm::cross(tri.b - tri.a, tri.c - tri.a)) > 0.0f))
             j["vertices"].fail("the vertices are collinear (the triangle has no area)");
         o.shape = tri;
@@ -238,8 +265,10 @@ void JsonSceneReader::read_object(const JsonValue& j) {
     o.name = j.has("name") ? j["name"].string()
                            : type + " " + j.pointer().substr(j.pointer().rfind('/') + 1);
     o.material = j.has("material") ? material_index(j["material"]) : material_names_.at("default");
-    const glm::mat4 m =
-        (j.has("transform") ? read_transform(j["transform"]) : glm::mat4(1.0f)) * pre;
+    const glm::dmat4 placement =
+        (j.has("transform") ? read_transform(j["transform"]) : glm::dmat4(1.0)) * pre;
+    const glm::mat4 m = placed ? glm::mat4(glm::translate(glm::dmat4(1.0), -origin_) * placement)
+                               : glm::mat4(1.0f);
     if (m != glm::mat4(1.0f)) {
         o.transform = Transform::from_matrix(m);
         if (!o.transform)
@@ -249,7 +278,7 @@ void JsonSceneReader::read_object(const JsonValue& j) {
     scene_.objects.push_back(std::move(o));
 }
 
-Shape JsonSceneReader::read_mesh(const JsonValue& j, glm::mat4& normalize) {
+Shape JsonSceneReader::read_mesh(const JsonValue& j, glm::dmat4& normalize) {
     const std::uint32_t index = load_mesh(j["file"]);
     if (j.has("normalize") && j["normalize"].boolean()) {
         // Largest side 1, centred on x and z, resting on y = 0.
@@ -258,8 +287,8 @@ Shape JsonSceneReader::read_mesh(const JsonValue& j, glm::mat4& normalize) {
         const float largest = std::max({e.x, e.y, e.z});
         if (!(largest > 0.0f)) j["normalize"].fail("the mesh has no extent to normalise");
         const vec3 anchor{b.centre().x, b.lo.y, b.centre().z};
-        normalize = glm::scale(glm::mat4(1.0f), vec3(1.0f / largest)) *
-                    glm::translate(glm::mat4(1.0f), -anchor);
+        normalize = glm::scale(glm::dmat4(1.0), glm::dvec3(1.0 / largest)) *
+                    glm::translate(glm::dmat4(1.0), -glm::dvec3(anchor));
     }
     return MeshRef{index, !j.has("material")};
 }
@@ -321,7 +350,11 @@ LoadedScene load_json_scene(const std::filesystem::path& path) {
 
 void frame_bounds(Scene& scene, const Aabb& bounds, int cols, int rows) {
     const vec3 centre = bounds.centre();
-    const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-6f);
+    // Never closer than float can tell apart from the centre: collapsed geometry far
+    // from the origin would otherwise put the eye on the target (a NaN camera).
+    const float magnitude =
+        std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)});
+    const float radius = std::max({0.5f * glm::length(bounds.extent()), 1e-6f, 1e-4f * magnitude});
     const float fov = 40.0f;
     const float distance = radius / std::sin(glm::radians(fov) * 0.5f) * 1.05f;
     const vec3 view_dir = glm::normalize(vec3(0.35f, 0.3f, 1.0f));
@@ -332,9 +365,31 @@ void frame_bounds(Scene& scene, const Aabb& bounds, int cols, int rows) {
     scene.lights = {key, fill};
 }
 
-LoadedScene load_obj_scene(const std::filesystem::path& path) {
-    ObjData obj = load_obj(path);
+namespace {
+
+// The rotation that takes a bare mesh's `up` axis to +y (axis permutations with signs,
+// so exact in float); throws on an unknown name.
+glm::mat3 up_rotation(const std::filesystem::path& path, const std::string& up) {
+    // Columns are the images of x, y and z.
+    if (up == "y") return glm::mat3(1.0f);
+    if (up == "-y") return {{1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+    if (up == "z") return {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}};
+    if (up == "-z") return {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
+    if (up == "x") return {{0, 1, 0}, {-1, 0, 0}, {0, 0, 1}};
+    if (up == "-x") return {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}};
+    throw Error(path.string(), "--up", "unknown axis \"" + up + "\" (expected x, y, z, -x, -y or -z)");
+}
+
+}  // namespace
+
+LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions& options) {
+    const glm::mat3 rotate = up_rotation(path, options.up);
+    ObjData obj = load_obj(path, ObjOptions{.recentre_beyond = kFarFromOrigin});
+    for (vec3& p : obj.mesh.positions) p = rotate * p;
+    for (vec3& n : obj.mesh.corner_normals) n = rotate * n;
     LoadedScene out;
+    out.origin = obj.origin;
+    out.scene.origin = obj.origin;
     Scene& scene = out.scene;
     scene.materials = material_presets();
     for (Material& m : obj.materials) scene.materials.push_back(std::move(m));
@@ -350,9 +405,9 @@ LoadedScene load_obj_scene(const std::filesystem::path& path) {
     return out;
 }
 
-LoadedScene load_scene(const std::filesystem::path& path) {
+LoadedScene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
     const std::string ext = lower(path.extension().string());
-    if (ext == ".obj") return load_obj_scene(path);
+    if (ext == ".obj") return load_obj_scene(path, options);
     if (ext == ".json") return load_json_scene(path);
     throw Error(path.string(), "open",
                 "unknown scene format \"" + ext + "\" (expected .json or .obj)");

@@ -13,12 +13,24 @@ namespace rt {
 struct LoadedScene {
     Scene scene;  // not yet built (Scene::build)
     std::vector<std::string> warnings;
+    // Where the scene's zero lies in the file's coordinates: a bare mesh is moved next to
+    // the origin (in double precision) so that float keeps its shape and its lighting.
+    glm::dvec3 origin{0.0};
+};
+
+// Which of a bare mesh's axes points up: "y" (the default), "z", "x", "-y", "-z", "-x".
+// Z-up is common for scans and CAD models.
+struct LoadOptions {
+    std::string up = "y";
 };
 
 // Throws rt::Error "FILE: WHERE: WHAT" on anything it cannot use.
-LoadedScene load_scene(const std::filesystem::path& path);
+LoadedScene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 LoadedScene load_json_scene(const std::filesystem::path& path);
-LoadedScene load_obj_scene(const std::filesystem::path& path);
+LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions& options = {});
+
+// The accepted --up names, for the programs' checks.
+inline constexpr const char* kUpAxes[] = {"y", "z", "x", "-y", "-z", "-x"};
 
 // Looks at the bounds from the front and a little above, with a key and a fill light.
 void frame_bounds(Scene& scene, const Aabb& bounds, int cols, int rows);

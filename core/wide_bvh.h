@@ -112,7 +112,7 @@ struct BoxRay {
 template <int N>
 template <bool kAnyHit, class HitLeaf>
 bool WideBvh<N>::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
-    if (nodes_.empty()) return false;
+    if (nodes_.empty() || !finite_ray(ray)) return false;
     const detail::BoxRay<N> box_ray(ray);
     struct Pending {
         std::uint32_t child, count;  // count 0: a node

@@ -35,6 +35,7 @@ uniform float u_checker_scale;
 uniform int u_plane;  // a plane's checker lies in the plane
 uniform vec3 u_plane_t1;
 uniform vec3 u_plane_t2;
+uniform vec3 u_pattern_shift;  // Scene::pattern_shift: the scene's origin, folded
 
 layout(location = 0) out vec4 o_colour;  // linear; encoded to sRGB where it is written out
 
@@ -70,8 +71,12 @@ Surface surface() {
 vec3 pattern(vec3 object) {
     if (u_checker == 0) return vec3(1.0);
     vec3 p = u_plane == 1 ? vec3(dot(object, u_plane_t1), dot(object, u_plane_t2), 0.0) : object;
-    ivec3 cell = ivec3(floor(p / u_checker_scale));
-    return ((cell.x + cell.y + cell.z) & 1) == 0 ? u_checker_a : u_checker_b;
+    p += u_pattern_shift;
+    // Each cell's parity as in core/material.h: defined at any coordinate.
+    vec3 f = floor(p / u_checker_scale);
+    vec3 parity = f - 2.0 * floor(0.5 * f);
+    float sum = parity.x + parity.y + parity.z;
+    return sum == 0.0 || sum == 2.0 ? u_checker_a : u_checker_b;
 }
 
 void main() {

@@ -142,7 +142,7 @@ std::vector<DrawItem> GpuScene::draw_list(const Camera& camera) {
         const Object& o = scene_.objects[i];
         DrawItem item;
         item.model = o.transform ? o.transform->m : glm::mat4(1.0f);
-        item.material = o.material;
+            item.material = o.material;
         item.object_id = i + 1;
         if (const auto* s = std::get_if<Sphere>(&o.shape)) {
             const glm::vec3 centre = glm::vec3(item.model * glm::vec4(s->centre, 1.0f));

@@ -41,6 +41,7 @@ struct DrawItem {
     std::uint32_t prim_base = 0;   // index of the draw's first triangle in its mesh
     const Plane* plane = nullptr;  // for the checker's in-plane coordinates
     bool sphere = false;           // the mesh is the unit sphere: normals are its positions
+    glm::vec3 pattern_shift{0.0f};  // Scene::pattern_shift of the object and material
 };
 
 struct DepthRange {

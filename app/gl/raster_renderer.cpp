@@ -43,6 +43,7 @@ void RasterRenderer::set_material(const Material& m, const DrawItem& item) {
         phong_.set("u_checker_scale", m.checker->scale);
     }
     phong_.set("u_plane", item.plane ? 1 : 0);
+    phong_.set("u_pattern_shift", scene_.pattern_shift(item.object_id - 1, item.material));
     phong_.set("u_sphere", item.sphere ? 1 : 0);
     if (item.plane) {
         glm::vec3 t1, t2;

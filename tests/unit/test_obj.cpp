@@ -71,27 +71,63 @@ TEST(Obj, BareObjSceneIsFramedAndLit) {
     }
 }
 
-void expect_obj_error(const std::string& name, const std::string& text, const std::string& detail) {
+void expect_obj_error(const std::string& name, const std::string& text, const std::string& where,
+                      const std::string& detail) {
     const auto path = test::write_file(test::temp_dir("obj_" + name) / (name + ".obj"), text);
     try {
         load_obj(path);
         FAIL() << name << " loaded";
     } catch (const Error& e) {
         EXPECT_EQ(e.file(), path.string());
+        EXPECT_EQ(e.where(), where) << e.what();
         EXPECT_NE(e.detail().find(detail), std::string::npos) << e.what();
     }
 }
 
 TEST(Obj, BadFilesGiveLocatedErrors) {
-    expect_obj_error("out_of_range", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "out of range");
-    expect_obj_error("negative_out_of_range", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -7\n",
+    expect_obj_error("out_of_range", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n\nf 1 2 4\n", "line 6",
+                     "face index 4 is out of range (the file has 3 vertices)");
+    expect_obj_error("negative_out_of_range", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -7\n", "line 4",
                      "out of range");
-    expect_obj_error("nan", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "\"nan\" is not a finite");
-    expect_obj_error("inf", "v 0 0 0\nv 1 0 0\nv 0 1e999 0\nf 1 2 3\n",
+    expect_obj_error("nan", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "line 2",
+                     "\"nan\" is not a finite");
+    expect_obj_error("inf", "v 0 0 0\nv 1 0 0\nv 0 1e999 0\nf 1 2 3\n", "line 3",
                      "\"1e999\" is not a finite");
-    expect_obj_error("zero_index", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "");
-    expect_obj_error("only_points", "v 0 0 0\nv 1 0 0\np 1 2\n", "no triangles");
-    expect_obj_error("empty", "", "no triangles");
+    expect_obj_error("zero_index", "# a comment\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 0 1 2\n",
+                     "line 6", "face index 0 (OBJ indices start at 1)");
+    expect_obj_error("two_corners", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", "line 4",
+                     "a face needs at least 3 vertices, this one has 2");
+    expect_obj_error("garbage_index", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 x 3\n", "line 4",
+                     "face vertex \"x\" is not an index");
+    expect_obj_error("only_points", "v 0 0 0\nv 1 0 0\np 1 2\n", "faces", "only line or point");
+    expect_obj_error("empty", "", "faces", "no faces");
+}
+
+// A byte-order mark before the first line (some Windows editors write one) is skipped:
+// the mtllib on that line still names the materials.
+TEST(Obj, ByteOrderMarkIsSkippedInObjAndMtl) {
+    const auto dir = test::temp_dir("obj_bom");
+    test::write_file(dir / "bom.mtl", "\xEF\xBB\xBFnewmtl red\nKd 1 0 0\n");
+    const auto path = test::write_file(
+        dir / "bom.obj", "\xEF\xBB\xBFmtllib bom.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+    const ObjData obj = load_obj(path);
+    ASSERT_EQ(obj.materials.size(), 1u);
+    EXPECT_EQ(obj.materials[0].name, "red");
+    EXPECT_EQ(obj.materials[0].kd, vec3(1.0f, 0.0f, 0.0f));
+    ASSERT_EQ(obj.mesh.materials.size(), 1u);
+    EXPECT_EQ(obj.mesh.materials[0], 0u);
+    EXPECT_TRUE(obj.warnings.empty());
+}
+
+// Lines and points are drawn by neither pipeline: a file that has faces too loads, and
+// says so in one warning line.
+TEST(Obj, LinesAndPointsBesideFacesAreOneWarning) {
+    const auto path = test::write_file(test::temp_dir("obj_lines") / "l.obj",
+                                       "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\nl 2 3\np 1\n");
+    const ObjData obj = load_obj(path);
+    EXPECT_EQ(obj.mesh.triangles.size(), 1u);
+    ASSERT_EQ(obj.warnings.size(), 1u);
+    EXPECT_NE(obj.warnings[0].find("2 line and 1 point elements"), std::string::npos);
 }
 
 TEST(Obj, RelativeIndicesWork) {
