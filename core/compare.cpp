@@ -14,6 +14,15 @@ namespace {
 
 vec3 encoded(const vec3& c) { return {srgb_encode(c.x), srgb_encode(c.y), srgb_encode(c.z)}; }
 
+bool finite(const vec3& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
+
+// Per channel, on the displayed values. A NaN or infinite pixel (a broken render) is as
+// far as a pixel can be from anything: 1 in every channel, never a NaN statistic.
+vec3 pixel_difference(const vec3& a, const vec3& b) {
+    if (!finite(a) || !finite(b)) return vec3(1.0f);
+    return glm::abs(encoded(a) - encoded(b));
+}
+
 // Colours given in sRGB terms are decoded, so that they show as written once encoded.
 vec3 from_srgb(float r, float g, float b) {
     return {srgb_decode(r), srgb_decode(g), srgb_decode(b)};
@@ -81,7 +90,8 @@ ImageDiff compare_images(const Image& a, const Image& b, double threshold) {
     d.threshold = threshold;
     double sum = 0.0, sum_sq = 0.0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        const vec3 diff = glm::abs(encoded(a.pixels[i]) - encoded(b.pixels[i]));
+        const vec3 diff = pixel_difference(a.pixels[i], b.pixels[i]);
+        d.non_finite += !finite(a.pixels[i]) || !finite(b.pixels[i]);
         double largest = 0.0;
         for (int k = 0; k < 3; ++k) {
             sum += diff[k];
@@ -111,7 +121,7 @@ Image difference_image(const Image& a, const Image& b, float scale) {
     const float s = scale > 0.0f ? scale : 1.0f;
     for (int y = 0; y < a.height; ++y) {
         for (int x = 0; x < a.width; ++x) {
-            const vec3 d = glm::abs(encoded(a.at(x, y)) - encoded(b.at(x, y)));
+            const vec3 d = pixel_difference(a.at(x, y), b.at(x, y));
             out.at(x, y) = heat_colour(std::max({d.x, d.y, d.z}) / s);
         }
         const vec3 c =

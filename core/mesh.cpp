@@ -1,7 +1,9 @@
 #include "core/mesh.h"
 
 #include <cmath>
+#include <numbers>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <glm/geometric.hpp>
 
@@ -102,15 +104,16 @@ vec3 TriangleMesh::point(const Hit& hit) const {
 namespace {
 
 // For each vertex, the first vertex with exactly the same position.
+struct Vec3Hash {
+    std::size_t operator()(const vec3& p) const {
+        std::size_t h = 0;
+        for (int i = 0; i < 3; ++i) h = h * 1000003u ^ std::hash<float>{}(p[i]);
+        return h;
+    }
+};
+
 std::vector<std::uint32_t> weld_positions(const std::vector<vec3>& positions) {
-    struct Hash {
-        std::size_t operator()(const vec3& p) const {
-            std::size_t h = 0;
-            for (int i = 0; i < 3; ++i) h = h * 1000003u ^ std::hash<float>{}(p[i]);
-            return h;
-        }
-    };
-    std::unordered_map<vec3, std::uint32_t, Hash> first;
+    std::unordered_map<vec3, std::uint32_t, Vec3Hash> first;
     std::vector<std::uint32_t> weld(positions.size());
     for (std::uint32_t i = 0; i < positions.size(); ++i)
         weld[i] = first.try_emplace(positions[i], i).first->second;
@@ -118,6 +121,39 @@ std::vector<std::uint32_t> weld_positions(const std::vector<vec3>& positions) {
 }
 
 }  // namespace
+
+std::size_t drop_duplicate_triangles(TriangleMesh& mesh) {
+    const std::vector<std::uint32_t> weld = weld_positions(mesh.positions);
+    struct Key {
+        std::uint32_t a, b, c;
+        bool operator==(const Key&) const = default;
+    };
+    struct KeyHash {
+        std::size_t operator()(const Key& k) const {
+            return (std::size_t{k.a} * 1000003u ^ k.b) * 1000003u ^ k.c;
+        }
+    };
+    std::unordered_set<Key, KeyHash> seen;
+    std::size_t kept = 0;
+    const bool normals = !mesh.corner_normals.empty(), materials = !mesh.materials.empty();
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        std::uint32_t v[3] = {weld[mesh.triangles[t][0]], weld[mesh.triangles[t][1]],
+                              weld[mesh.triangles[t][2]]};
+        // The same cycle whichever corner the file starts from; the winding is kept.
+        const int first = v[0] <= v[1] && v[0] <= v[2] ? 0 : (v[1] <= v[2] ? 1 : 2);
+        if (!seen.insert({v[first], v[(first + 1) % 3], v[(first + 2) % 3]}).second) continue;
+        mesh.triangles[kept] = mesh.triangles[t];
+        if (normals)
+            for (int k = 0; k < 3; ++k) mesh.corner_normals[3 * kept + k] = mesh.corner_normals[3 * t + k];
+        if (materials) mesh.materials[kept] = mesh.materials[t];
+        ++kept;
+    }
+    const std::size_t dropped = mesh.triangles.size() - kept;
+    mesh.triangles.resize(kept);
+    if (normals) mesh.corner_normals.resize(3 * kept);
+    if (materials) mesh.materials.resize(kept);
+    return dropped;
+}
 
 void compute_corner_normals(TriangleMesh& mesh, float crease_degrees) {
     const std::size_t tri_count = mesh.triangles.size();
@@ -138,22 +174,53 @@ void compute_corner_normals(TriangleMesh& mesh, float crease_degrees) {
     for (std::uint32_t t = 0; t < tri_count; ++t)
         for (int k = 0; k < 3; ++k) faces_at[fill[weld[mesh.triangles[t][k]]]++] = t;
 
-    const float cos_crease = std::cos(crease_degrees * 3.14159265f / 180.0f);
+    const float cos_crease = std::cos(crease_degrees * std::numbers::pi_v<float> / 180.0f);
     mesh.corner_normals.assign(3 * tri_count, vec3(0.0f));
-    for (std::uint32_t t = 0; t < tri_count; ++t) {
+    std::vector<vec3> unit(tri_count);
+    for (std::size_t t = 0; t < tri_count; ++t) {
         const float len = glm::length(face[t]);
-        const vec3 own = len > 0.0f ? face[t] / len : vec3(0.0f);
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t v = weld[mesh.triangles[t][k]];
+        unit[t] = len > 0.0f ? face[t] / len : vec3(0.0f);
+    }
+    // Around each vertex, faces that point the same way (a fan of coplanar triangles, a
+    // face repeated) are merged into one direction carrying their summed normals, and
+    // each direction is compared with the others once: the work is the number of faces
+    // times the number of distinct directions there, not the faces squared. A vertex
+    // with more than kMaxDirections directions (a cone's apex of thousands of slivers)
+    // gives each corner its own face normal: flat there, and still linear.
+    constexpr std::size_t kMaxDirections = 256;
+    struct Direction {
+        vec3 unit, sum, result;
+    };
+    std::vector<Direction> dirs;
+    std::unordered_map<vec3, std::uint32_t, Vec3Hash> dir_of;
+    std::vector<std::uint32_t> corner_dir;
+    for (std::uint32_t v = 0; v + 1 < start.size(); ++v) {
+        if (start[v] == start[v + 1]) continue;
+        dirs.clear();
+        dir_of.clear();
+        corner_dir.clear();
+        for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
+            const std::uint32_t t = faces_at[i];
+            const auto [it, added] = dir_of.try_emplace(unit[t], static_cast<std::uint32_t>(dirs.size()));
+            if (added) dirs.push_back({unit[t], vec3(0.0f), vec3(0.0f)});
+            dirs[it->second].sum += face[t];  // length = 2 x area: area weighting
+            corner_dir.push_back(it->second);
+        }
+        const bool flat = dirs.size() > kMaxDirections;
+        for (Direction& own : dirs) {
             vec3 sum(0.0f);
-            for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
-                const vec3& other = face[faces_at[i]];  // length = 2 x area: area weighting
-                const float other_len = glm::length(other);
-                if (other_len > 0.0f && glm::dot(own, other) >= cos_crease * other_len)
-                    sum += other;
-            }
+            for (const Direction& other : dirs)
+                if (!flat && other.unit != vec3(0.0f) && glm::dot(own.unit, other.unit) >= cos_crease)
+                    sum += other.sum;
             const float sum_len = glm::length(sum);
-            mesh.corner_normals[3 * t + k] = sum_len > 0.0f ? sum / sum_len : own;
+            own.result = sum_len > 0.0f ? sum / sum_len : own.unit;
+        }
+        // Each face's corner at this vertex (a face can touch a welded vertex twice).
+        for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
+            const std::uint32_t t = faces_at[i];
+            for (int k = 0; k < 3; ++k)
+                if (weld[mesh.triangles[t][k]] == v)
+                    mesh.corner_normals[3 * t + k] = dirs[corner_dir[i - start[v]]].result;
         }
     }
 }

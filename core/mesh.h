@@ -50,6 +50,11 @@ struct TriangleMesh {
 // The box around the triangles (unused vertices left out).
 Aabb bounds_of(const TriangleMesh& mesh);
 
+// Drops triangles that repeat an earlier one: the same three positions in the same
+// winding (a file that lists one face a million times would make every ray test them
+// all). Corner normals and materials follow. Returns how many were dropped.
+std::size_t drop_duplicate_triangles(TriangleMesh& mesh);
+
 // Fills corner_normals by averaging, at each vertex, the area-weighted normals of the
 // faces that meet there within `crease_degrees` of each other: smooth curved surfaces,
 // sharp box corners.

@@ -254,8 +254,11 @@ ObjData load_obj(const std::filesystem::path& path, const ObjOptions& options) {
         options.recentre_beyond)
         data.origin = centre;
     copy_positions(file, attrib, data.origin, data.mesh);
-    if (!copy_triangles(file, attrib, shapes, data.mesh))
-        compute_corner_normals(data.mesh, options.crease_degrees);
+    const bool has_normals = copy_triangles(file, attrib, shapes, data.mesh);
+    if (const std::size_t dropped = drop_duplicate_triangles(data.mesh))
+        data.warnings.push_back(file + ": warning: " + std::to_string(dropped) +
+                                " faces repeat an earlier face and were dropped");
+    if (!has_normals) compute_corner_normals(data.mesh, options.crease_degrees);
     if (counts.lines + counts.points > 0)
         data.warnings.push_back(file + ": warning: " + std::to_string(counts.lines) +
                                 " line and " + std::to_string(counts.points) +

@@ -160,17 +160,23 @@ void Job::report_diff(const rt::Image& raster_image, const rt::Image& traced) {
     write(rt::difference_image(raster_image, traced, scale), output_path(o_, "diff"), o_);
     stats_["diff"] = {{"mean_abs_error", d.mean_abs_error},
                       {"rms", d.rms},
-                      {"psnr_db", std::isfinite(d.psnr_db) ? d.psnr_db : 999.0},
+                      {"psnr_db", d.identical() ? 999.0 : d.psnr_db},
+                      {"identical", d.identical()},
+                      {"non_finite_pixels", d.non_finite},
                       {"max_error", d.max_error},
                       {"threshold", d.threshold},
                       {"share_over_threshold", d.share_over},
                       {"scale", scale}};
-    if (!o_.quiet)
-        std::printf(
-            "raster vs traced: mean abs error %.4f, RMS %.4f, PSNR %.2f dB, %.2f%% of pixels "
-            "differ by more than "
-            "%.0f/255 (diff scale 0 to %.3f)\n",
-            d.mean_abs_error, d.rms, d.psnr_db, 100.0 * d.share_over, d.threshold * 255.0, scale);
+    if (o_.quiet) return;
+    char psnr[32] = "identical";
+    if (!d.identical()) std::snprintf(psnr, sizeof psnr, "%.2f dB", d.psnr_db);
+    std::printf(
+        "raster vs traced: mean abs error %.4f, RMS %.4f, PSNR %s, %.2f%% of pixels differ by "
+        "more than %.0f/255 (diff scale 0 to %.3f)\n",
+        d.mean_abs_error, d.rms, psnr, 100.0 * d.share_over, d.threshold * 255.0, scale);
+    if (d.non_finite > 0)
+        std::printf("raster vs traced: %llu pixels are NaN or infinite in one image\n",
+                    static_cast<unsigned long long>(d.non_finite));
 }
 
 void Job::write_stats() {

@@ -148,3 +148,58 @@ TEST(Obj, MissingMtlIsAWarningNotAnError) {
 
 }  // namespace
 }  // namespace rt
+
+namespace rt {
+namespace {
+
+// A million faces on the same three vertices, without normals: the smooth normals used
+// to take time in the square of the faces around a vertex (80k faces: 27 s); now the
+// repeats are dropped with one warning and the load is linear. A quadratic load would
+// run into the test's time-out rather than pass.
+TEST(Obj, MillionFacesOnOneTriangleLoadInLinearTime) {
+    std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (int i = 0; i < 1000000; ++i) text += "f 1 2 3\n";
+    const auto path = test::write_file(test::temp_dir("obj_valence") / "v.obj", text);
+    const ObjData obj = load_obj(path);
+    EXPECT_EQ(obj.mesh.triangles.size(), 1u);
+    ASSERT_EQ(obj.warnings.size(), 1u);
+    EXPECT_NE(obj.warnings[0].find("999999 faces repeat"), std::string::npos);
+}
+
+// A cone of 200,000 slivers around one apex: 200,000 distinct face directions meet
+// there. Past 256 directions the apex's corners take their own face normal (flat), so
+// the work stays linear; the rim's corners are still smoothed.
+TEST(Obj, HighValenceApexStaysLinearAndDefined) {
+    constexpr int kSides = 200000;
+    std::string text = "v 0 1 0\n";
+    for (int i = 0; i < kSides; ++i) {
+        const double a = 2.0 * 3.141592653589793 * i / kSides;
+        text += "v " + std::to_string(std::cos(a)) + " 0 " + std::to_string(std::sin(a)) + "\n";
+    }
+    for (int i = 0; i < kSides; ++i)
+        text += "f 1 " + std::to_string(2 + (i + 1) % kSides) + " " + std::to_string(2 + i) + "\n";
+    const auto path = test::write_file(test::temp_dir("obj_apex") / "cone.obj", text);
+    const ObjData obj = load_obj(path);
+    ASSERT_EQ(obj.mesh.corner_normals.size(), 3u * obj.mesh.triangles.size());
+    for (std::size_t t = 0; t < obj.mesh.triangles.size(); t += 997) {
+        const vec3 own = glm::normalize(obj.mesh.face_normal(static_cast<std::uint32_t>(t)));
+        EXPECT_NEAR(glm::dot(obj.mesh.corner_normals[3 * t], own), 1.0f, 1e-5f);  // the apex
+        EXPECT_NEAR(glm::length(obj.mesh.corner_normals[3 * t + 1]), 1.0f, 1e-5f);
+    }
+}
+
+// Duplicates are recognised whichever corner a face starts from, and a face wound the
+// other way (its back) is kept.
+TEST(Obj, RepeatedFacesAreDroppedWindingKept) {
+    TriangleMesh mesh;
+    mesh.positions = {vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), vec3(0, 0, 0)};
+    mesh.triangles = {{0, 1, 2}, {1, 2, 0}, {2, 1, 0}, {3, 1, 2}, {0, 1, 2}};
+    mesh.materials = {5, 6, 7, 8, 9};
+    EXPECT_EQ(drop_duplicate_triangles(mesh), 3u);  // {1,2,0}, {3,1,2} (welded), {0,1,2}
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    EXPECT_EQ(mesh.triangles[1], glm::uvec3(2, 1, 0));
+    EXPECT_EQ(mesh.materials, (std::vector<std::uint32_t>{5, 7}));
+}
+
+}  // namespace
+}  // namespace rt
