@@ -12,6 +12,8 @@
 // the new NAME.png.
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -32,8 +34,59 @@ struct Match {
     fs::path reference;
     OIIO::ImageBufAlgo::CompareResults result{};
     double fail_percent = 100.0;
+    double edge_percent = 0.0;  // failing pixels the edge rule accepted
     bool passed = false;
 };
+
+// A raster image from another driver differs where its rasterization rules put an edge
+// pixel on the other side (far checker squares, silhouettes): the colour is right, one
+// pixel over. The edge rule accepts a failing pixel when the new image's value there is
+// found, within the threshold, among the reference's 3x3 neighbours. Geometry moved
+// by two pixels or more, or missing, or wrongly shaded finds no such match; a whole
+// picture moved by one pixel matches everywhere, but along every edge at once, which
+// the cap on accepted pixels (a few percent) refuses.
+struct EdgeCount {
+    long long strict = 0, edge = 0;
+};
+
+EdgeCount count_with_edge_rule(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, float fail) {
+    const int w = a.spec().width, h = a.spec().height, c = std::min(3, a.spec().nchannels);
+    std::vector<float> pa(static_cast<std::size_t>(w) * h * a.spec().nchannels);
+    std::vector<float> pb(static_cast<std::size_t>(w) * h * b.spec().nchannels);
+    a.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, pa.data());
+    b.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, pb.data());
+    const auto at = [&](const std::vector<float>& p, int channels, int x, int y) {
+        return &p[(static_cast<std::size_t>(y) * w + x) * channels];
+    };
+    const auto close = [&](const float* u, const float* v) {
+        for (int k = 0; k < c; ++k)
+            if (std::fabs(u[k] - v[k]) > fail) return false;
+        return true;
+    };
+    const auto found_near = [&](const float* value, const std::vector<float>& other, int channels,
+                                int x, int y) {
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int nx = x + dx, ny = y + dy;
+                if (nx >= 0 && ny >= 0 && nx < w && ny < h && close(value, at(other, channels, nx, ny)))
+                    return true;
+            }
+        return false;
+    };
+    const int ca = a.spec().nchannels, cb = b.spec().nchannels;
+    (void)ca;
+    EdgeCount n;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float *u = at(pa, ca, x, y), *v = at(pb, cb, x, y);
+            if (close(u, v)) continue;
+            if (found_near(u, pb, cb, x, y))
+                ++n.edge;
+            else
+                ++n.strict;
+        }
+    return n;
+}
 
 std::vector<fs::path> references(const fs::path& dir, const std::string& name) {
     std::vector<fs::path> out;
@@ -47,8 +100,10 @@ std::vector<fs::path> references(const fs::path& dir, const std::string& name) {
     return out;
 }
 
+// With edge_percent < 0 the plain rule: at most fail_percent of pixels over `fail`.
+// Otherwise the edge rule too: pixels it accepts count up to edge_percent apart.
 Match compare(const OIIO::ImageBuf& image, const fs::path& reference, float fail,
-              double fail_percent) {
+              double fail_percent, double edge_percent) {
     Match m;
     m.reference = reference;
     const OIIO::ImageBuf ref(reference.string());
@@ -57,8 +112,86 @@ Match compare(const OIIO::ImageBuf& image, const fs::path& reference, float fail
     m.result = algo::compare(image, ref, fail, fail / 2.0f);
     const double pixels = static_cast<double>(image.spec().width) * image.spec().height;
     m.fail_percent = 100.0 * static_cast<double>(m.result.nfail) / pixels;
+    if (edge_percent >= 0.0 && m.fail_percent > fail_percent) {
+        const EdgeCount n = count_with_edge_rule(image, ref, fail);
+        m.fail_percent = 100.0 * static_cast<double>(n.strict) / pixels;
+        m.edge_percent = 100.0 * static_cast<double>(n.edge) / pixels;
+        m.passed = m.fail_percent <= fail_percent && m.edge_percent <= edge_percent;
+        return m;
+    }
     m.passed = !m.result.error && m.fail_percent <= fail_percent;
     return m;
+}
+
+// Shows the edge rule at work on a real reference: a reference whose edge pixels take a
+// neighbour's colour here and there (what another driver's rasterization rules do)
+// passes; the same picture moved by one pixel, by two, or with a hole where geometry
+// was, fails. Exit status 0 when all four come out so.
+int run_selftest(const fs::path& reference, float fail, double fail_percent, double edge_percent) {
+    const OIIO::ImageBuf ref(reference.string());
+    const int w = ref.spec().width, h = ref.spec().height, ch = ref.spec().nchannels;
+    std::vector<float> px(static_cast<std::size_t>(w) * h * ch);
+    ref.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, px.data());
+    const auto make = [&](auto&& pixel_at) {
+        OIIO::ImageBuf out(ref.spec());
+        std::vector<float> q(px.size());
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                for (int k = 0; k < ch; ++k)
+                    q[(static_cast<std::size_t>(y) * w + x) * ch + k] = pixel_at(x, y, k);
+        out.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, q.data());
+        return out;
+    };
+    const auto get = [&](int x, int y, int k) {
+        x = std::clamp(x, 0, w - 1);
+        y = std::clamp(y, 0, h - 1);
+        return px[(static_cast<std::size_t>(y) * w + x) * ch + k];
+    };
+    const auto differs = [&](int x, int y, int dx) {
+        for (int k = 0; k < std::min(3, ch); ++k)
+            if (std::fabs(get(x, y, k) - get(x + dx, y, k)) > fail) return true;
+        return false;
+    };
+    // Edge pixels (a colour change to their right) take their right neighbour's colour,
+    // spread evenly, as many as 1 % of the pixels: on the NVIDIA driver 0.42 % (whitted)
+    // and 0.75 % (many_spheres) of raster pixels were over the threshold, such edge pixels.
+    long long edges = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) edges += differs(x, y, 1);
+    const long long every = std::max(1LL, edges / std::max(1LL, static_cast<long long>(w) * h / 100));
+    std::vector<char> moved(static_cast<std::size_t>(w) * h, 0);
+    long long seen = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (differs(x, y, 1)) moved[static_cast<std::size_t>(y) * w + x] = seen++ % every == 0;
+    const OIIO::ImageBuf driver = make([&](int x, int y, int k) {
+        return moved[static_cast<std::size_t>(y) * w + x] ? get(x + 1, y, k) : get(x, y, k);
+    });
+    const OIIO::ImageBuf shift1 = make([&](int x, int y, int k) { return get(x - 1, y, k); });
+    const OIIO::ImageBuf shift2 = make([&](int x, int y, int k) { return get(x - 2, y, k); });
+    const OIIO::ImageBuf hole = make([&](int x, int y, int k) {
+        return std::abs(x - w / 2) < w / 10 && std::abs(y - h / 2) < h / 10 ? 0.0f : get(x, y, k);
+    });
+    struct Case {
+        const char* what;
+        const OIIO::ImageBuf* image;
+        bool should_pass;
+    };
+    int wrong = 0;
+    for (const Case& c : {Case{"edge pixels from another driver's rules", &driver, true},
+                          Case{"the picture moved by one pixel", &shift1, false},
+                          Case{"the picture moved by two pixels", &shift2, false},
+                          Case{"geometry missing", &hole, false}}) {
+        const Match plain = compare(*c.image, reference, fail, fail_percent, -1.0);
+        const Match edge = compare(*c.image, reference, fail, fail_percent, edge_percent);
+        const bool right = edge.passed == c.should_pass;
+        wrong += !right;
+        std::cout << (right ? "ok: " : "WRONG: ") << c.what << ": plain rule "
+                  << (plain.passed ? "passes" : "fails") << " (" << plain.fail_percent
+                  << "% over), edge rule " << (edge.passed ? "passes" : "fails") << " ("
+                  << edge.fail_percent << "% over, " << edge.edge_percent << "% at edges)\n";
+    }
+    return wrong == 0 ? 0 : 1;
 }
 
 // The absolute difference, brightened so that small errors show.
@@ -71,7 +204,7 @@ void write_difference(const OIIO::ImageBuf& a, const fs::path& reference, const 
 
 int run_compare(const std::string& name, const std::string& ref_name, const fs::path& new_image,
                 const fs::path& ref_dir, const fs::path& report_dir, float fail,
-                double fail_percent) {
+                double fail_percent, double edge_percent) {
     fs::create_directories(report_dir);
     OIIO::ImageBuf image(new_image.string());
     if (!image.read()) {
@@ -80,7 +213,7 @@ int run_compare(const std::string& name, const std::string& ref_name, const fs::
     }
     Match best;
     for (const fs::path& ref : references(ref_dir, ref_name)) {
-        Match m = compare(image, ref, fail, fail_percent);
+        Match m = compare(image, ref, fail, fail_percent, edge_percent);
         if (m.passed || best.reference.empty() || m.fail_percent < best.fail_percent) best = m;
         if (m.passed) break;
     }
@@ -106,6 +239,7 @@ int run_compare(const std::string& name, const std::string& ref_name, const fs::
                                    {"fail_threshold", fail},
                                    {"fail_percent_allowed", fail_percent},
                                    {"fail_percent", best.fail_percent},
+                                   {"edge_percent", best.edge_percent},
                                    {"mean_error", best.result.meanerror},
                                    {"max_error", best.result.maxerror},
                                    {"psnr", std::min(best.result.PSNR, 999.0)}};
@@ -113,7 +247,11 @@ int run_compare(const std::string& name, const std::string& ref_name, const fs::
     std::cout << name << ": " << status << " against "
               << (best.reference.empty() ? "-" : best.reference.string()) << ": "
               << best.fail_percent << "% of pixels over " << fail << " (allowed " << fail_percent
-              << "%), max error " << best.result.maxerror << ", mean " << best.result.meanerror
+              << "%)" << (edge_percent >= 0.0 ? ", " + std::to_string(best.edge_percent) +
+                                                     "% at edges (allowed " +
+                                                     std::to_string(edge_percent) + "%)"
+                                               : std::string())
+              << ", max error " << best.result.maxerror << ", mean " << best.result.meanerror
               << '\n';
     if (status != "passed")
         std::cout << "images and report: " << (report_dir / "index.html").string()
@@ -179,14 +317,25 @@ int main(int argc, char** argv) {
     cmp->add_option("--fail", fail, "Per-channel difference that fails a pixel");
     cmp->add_option("--fail-percent", fail_percent, "Share of failing pixels allowed, in percent");
     cmp->add_option("--as", ref_name, "The references' name, when not NAME");
+    double edge_percent = -1.0;
+    cmp->add_option("--edges", edge_percent,
+                    "Raster images: also accept up to this percent of pixels that differ only "
+                    "by a one-pixel move of an edge (another driver's rasterization rules)");
+    std::string selftest_ref;
+    auto* self = app.add_subcommand("selftest", "Show the edge rule accepting and refusing");
+    self->add_option("reference", selftest_ref)->required();
+    self->add_option("--fail", fail);
+    self->add_option("--fail-percent", fail_percent);
+    self->add_option("--edges", edge_percent);
     auto* rep = app.add_subcommand("report", "Write REPORT_DIR/index.html");
     rep->add_option("report", report_dir)->required();
     CLI11_PARSE(app, argc, argv);
     try {
         if (ref_name.empty()) ref_name = name;
-        return cmp->parsed()
-                   ? run_compare(name, ref_name, new_image, ref_dir, report_dir, fail, fail_percent)
-                   : run_report(report_dir);
+        if (self->parsed()) return run_selftest(selftest_ref, fail, fail_percent, edge_percent);
+        return cmp->parsed() ? run_compare(name, ref_name, new_image, ref_dir, report_dir, fail,
+                                           fail_percent, edge_percent)
+                             : run_report(report_dir);
     } catch (const std::exception& e) {
         std::cerr << "rtgolden: " << e.what() << '\n';
         return 1;
