@@ -55,22 +55,37 @@ SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
 }
 
 Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::size_t stride,
-                   const std::vector<Result>& reference, std::size_t ref_stride) {
+                   const std::vector<Result>& reference, std::size_t ref_stride,
+                   const ExactTracer& exact) {
+    constexpr std::size_t kMaxArbitrated = 2000;
     Mismatches m;
+    std::size_t arbitrated = 0;
     for (std::size_t i = 0; i < answers.size(); ++i) {
         const std::size_t ray = i * stride;
         if (ray % ref_stride != 0) continue;
         const Result& a = answers[i];
         const Result& r = reference[ray / ref_stride];
         ++m.checked;
-        if (a.hit() != r.hit()) {
-            ++m.hit_miss;
-        } else if (a.hit() && !set.occlusion) {
+        bool differ = a.hit() != r.hit();
+        if (!differ && a.hit() && !set.occlusion) {
             const float tolerance = 1e-4f * std::max(r.t, 1e-3f);
             const bool same_t = std::fabs(a.t - r.t) <= tolerance;
             // Two triangles may meet the ray at one t (a shared edge): either is right.
-            if (!same_t || (a.prim != r.prim && std::fabs(a.t - r.t) > 1e-6f * r.t)) ++m.wrong_hit;
+            differ = !same_t || (a.prim != r.prim && std::fabs(a.t - r.t) > 1e-6f * r.t);
         }
+        if (!differ) continue;
+        if (arbitrated++ < kMaxArbitrated) {
+            const ExactAnswer e = exact.trace(set.rays[ray], set.t_max[ray], set.occlusion);
+            if (e.ambiguous) {
+                ++m.ambiguous;
+                continue;
+            }
+            if (exact.agrees(e, a, set.occlusion)) {
+                ++m.reference_wrong;
+                continue;
+            }
+        }
+        ++(a.hit() != r.hit() ? m.hit_miss : m.wrong_hit);
     }
     return m;
 }
@@ -86,6 +101,8 @@ nlohmann::json to_json(const Mismatches& m) {
     return {{"checked", m.checked},
             {"hit_miss", m.hit_miss},
             {"wrong_hit", m.wrong_hit},
+            {"ambiguous", m.ambiguous},
+            {"reference_wrong", m.reference_wrong},
             {"ok", m.ok()}};
 }
 

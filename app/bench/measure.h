@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/bench/bench.h"
+#include "app/bench/exact.h"
 
 namespace rtbench {
 
@@ -23,8 +24,13 @@ struct SetTiming {
 
 struct Mismatches {
     std::size_t checked = 0;
+    // Disagreements the exact test (app/bench/exact.h) decided against the structure:
     std::size_t hit_miss = 0;   // one found a hit, the other did not
     std::size_t wrong_hit = 0;  // another primitive at another t
+    // Disagreements it did not: the ray grazes an edge (either answer is right), or the
+    // reference itself was wrong.
+    std::size_t ambiguous = 0;
+    std::size_t reference_wrong = 0;
     std::size_t allowed() const { return std::max<std::size_t>(2, checked / 100000); }
     bool ok() const { return hit_miss + wrong_hit <= allowed(); }
 };
@@ -34,9 +40,12 @@ struct Mismatches {
 SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
                    const MeasureOptions& options, std::vector<Result>& answers);
 
-// Compares answers[i] (for rays i * stride) with reference[i * ref_stride ...].
+// Compares answers[i] (for rays i * stride) with reference[i * ref_stride ...]; where
+// they disagree, `exact` decides (up to 2000 rays; past that, a structure is plainly
+// broken and the rest count against it).
 Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::size_t stride,
-                   const std::vector<Result>& reference, std::size_t ref_stride);
+                   const std::vector<Result>& reference, std::size_t ref_stride,
+                   const ExactTracer& exact);
 
 nlohmann::json to_json(const SetTiming& t);
 nlohmann::json to_json(const Mismatches& m);

@@ -1,0 +1,85 @@
+#include "app/bench/exact.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace rtbench {
+namespace {
+
+// Relative margins, far above double's rounding and far below float's: a ray this near
+// an edge, a vertex or its end is one that float structures may legitimately see
+// either way.
+constexpr double kEdgeMargin = 1e-6;
+constexpr double kTMargin = 1e-5;
+
+struct DoubleHit {
+    bool hit = false, grazing = false;
+    double t = 0.0;
+};
+
+// Moeller and Trumbore's test in double precision; `grazing` when the ray passes within
+// kEdgeMargin (in barycentric terms) of the triangle's boundary, inside or out.
+DoubleHit intersect(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& a,
+                    const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
+    const double det = glm::dot(e1, p);
+    DoubleHit h;
+    if (det == 0.0) return h;  // parallel or degenerate: no area to hit
+    const glm::dvec3 s = o - a;
+    const double u = glm::dot(s, p) / det;
+    const glm::dvec3 q = glm::cross(s, e1);
+    const double v = glm::dot(d, q) / det;
+    const double w = 1.0 - u - v;
+    h.t = glm::dot(e2, q) / det;
+    const double nearest = std::min({std::fabs(u), std::fabs(v), std::fabs(w)});
+    h.hit = u >= 0.0 && v >= 0.0 && w >= 0.0 && h.t > 0.0;
+    h.grazing = h.t > 0.0 && nearest <= kEdgeMargin && u >= -kEdgeMargin && v >= -kEdgeMargin &&
+                w >= -kEdgeMargin;
+    return h;
+}
+
+}  // namespace
+
+ExactAnswer ExactTracer::trace(const rt::Ray& ray, float t_max, bool any_hit) const {
+    const glm::dvec3 o(ray.origin), d(ray.dir);
+    const double limit = t_max;
+    ExactAnswer best;
+    best.t = limit;
+    double second = limit;  // the next-nearest hit, for ties between triangles
+    for (const glm::uvec3& tri : mesh_.triangles) {
+        const DoubleHit h = intersect(o, d, glm::dvec3(mesh_.positions[tri[0]]),
+                                      glm::dvec3(mesh_.positions[tri[1]]),
+                                      glm::dvec3(mesh_.positions[tri[2]]));
+        if (!h.hit && !h.grazing) continue;
+        const bool near_end = std::fabs(h.t) <= kTMargin * std::max(1.0, h.t) ||
+                              (std::isfinite(limit) && std::fabs(h.t - limit) <= kTMargin * limit);
+        if (h.t >= limit * (1.0 + kTMargin)) continue;
+        if (h.grazing || near_end) {
+            best.ambiguous = true;
+            if (!h.hit) continue;
+        }
+        if (!h.hit || h.t >= limit) continue;
+        if (h.t < best.t) {
+            second = best.t;
+            best.t = h.t;
+            best.hit = true;
+        } else {
+            second = std::min(second, h.t);
+        }
+        if (any_hit && !best.ambiguous) return best;
+    }
+    // Two surfaces within rounding of each other along the ray: either is first.
+    if (best.hit && second - best.t <= kTMargin * best.t) best.ambiguous = true;
+    return best;
+}
+
+bool ExactTracer::agrees(const ExactAnswer& exact, const Result& answer, bool occlusion) const {
+    if (exact.ambiguous) return true;
+    if (exact.hit != answer.hit()) return false;
+    if (!exact.hit || occlusion) return true;
+    return std::fabs(answer.t - exact.t) <= 1e-4 * std::max(exact.t, 1e-3);
+}
+
+}  // namespace rtbench
