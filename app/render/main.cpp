@@ -2,7 +2,7 @@
 //   rtrender SCENE [-o OUT.png|OUT.exr] [--mode trace|raster|both|itembuffer] [--gl egl|osmesa]
 //            [--item-buffer on|off] [--accel bvh|bvh2|grid|brute] [--size WxH] [--threads N]
 //            [--max-depth N] [--no-shadows]
-//            [--no-reflections] [--no-refractions] [--stats FILE.json] [--quiet]
+//            [--no-reflections] [--no-refractions] [--stats FILE.json] [--quiet] [--up AXIS]
 
 #include <iostream>
 
@@ -10,6 +10,7 @@
 
 #include "app/render/options.h"
 #include "core/error.h"
+#include "core/scene_loader.h"
 
 namespace rtrender {
 
@@ -31,6 +32,8 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
                    "Primary hits from the raster item buffer: on or off")
         ->check(CLI::IsMember({"on", "off"}));
     app.add_option("--size", o.size, "Image size WxH (default: the scene's resolution)");
+    app.add_option("--up", o.up, "A bare mesh's up axis: y (default), z, x, -y, -z or -x")
+        ->check(CLI::IsMember(std::vector<std::string>(std::begin(rt::kUpAxes), std::end(rt::kUpAxes))));
     app.add_option("--threads", o.threads, "Worker threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
     app.add_option("--max-depth", o.trace.max_depth, "Maximum reflection/refraction depth")

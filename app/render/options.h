@@ -15,6 +15,7 @@ struct Options {
     std::string mode = "trace";  // trace | raster | both | itembuffer
     std::string gl = "auto";     // egl | osmesa | auto
     std::string accel = "bvh";   // bvh | grid | brute
+    std::string up = "y";        // a bare mesh's up axis (rt::LoadOptions)
     bool item_buffer = false;
     int threads = 0;
     rt::TraceOptions trace;

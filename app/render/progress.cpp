@@ -29,4 +29,31 @@ void ProgressBar::finish() {
     shown_ = false;
 }
 
+PhaseLine::PhaseLine(bool enabled, std::string what) : what_(std::move(what)) {
+    if (!enabled) return;
+    ticker_ = std::thread([this] {
+        const auto start = std::chrono::steady_clock::now();
+        std::unique_lock lock(mutex_);
+        if (done_.wait_for(lock, std::chrono::seconds(1), [this] { return finished_; })) return;
+        do {
+            const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            std::fprintf(stderr, "\r%s... %.1fs", what_.c_str(), elapsed);
+            std::fflush(stderr);
+            shown_ = true;
+        } while (!done_.wait_for(lock, std::chrono::milliseconds(500), [this] { return finished_; }));
+    });
+}
+
+PhaseLine::~PhaseLine() {
+    if (!ticker_.joinable()) return;
+    {
+        std::lock_guard lock(mutex_);
+        finished_ = true;
+    }
+    done_.notify_one();
+    ticker_.join();
+    if (shown_) std::fprintf(stderr, "\r\033[K");  // clear the line for what follows
+}
+
 }  // namespace rtrender

@@ -203,13 +203,22 @@ int Job::run() {
                         "expected WxH between 1x1 and 16384x16384, got \"" + o_.size + "\"");
 
     auto start = Clock::now();
-    loaded_ = rt::load_scene(o_.scene);
-    for (const std::string& w : loaded_.warnings) std::cerr << w << '\n';
+    const bool show_phases = !o_.quiet && isatty(STDERR_FILENO);
+    {
+        const PhaseLine phase(show_phases, "loading " + o_.scene);
+        loaded_ = rt::load_scene(o_.scene, rt::LoadOptions{.up = o_.up});
+    }
+    if (!o_.quiet)
+        for (const std::string& w : loaded_.warnings) std::cerr << w << '\n';
     rt::Scene& scene = loaded_.scene;
     if (size) scene.camera = scene.camera.resized(size->first, size->second);
     stats_["load_seconds"] = seconds_since(start);
+    stats_["origin"] = {loaded_.origin.x, loaded_.origin.y, loaded_.origin.z};
     start = Clock::now();
-    scene.build(*rt::parse_accel(o_.accel));  // CLI11 allowed only known names
+    {
+        const PhaseLine phase(show_phases, "building the acceleration structures");
+        scene.build(*rt::parse_accel(o_.accel));  // CLI11 allowed only known names
+    }
     stats_["build_seconds"] = seconds_since(start);
     stats_["accel"] = o_.accel;
 

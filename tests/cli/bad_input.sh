@@ -11,9 +11,10 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 cases=0
 
-# check NAME EXPECTED_FILE_PREFIX -- ARGS...
+# check NAME EXPECTED_FILE_PREFIX [EXPECTED_WHERE] -- ARGS...
 check() {
-    local name=$1 file=$2
+    local name=$1 file=$2 where="[^:]+"
+    if [ "$3" != "--" ]; then where=$3; shift; fi
     shift 3
     cases=$((cases + 1))
     local status=0 start=$SECONDS
@@ -27,8 +28,8 @@ check() {
         echo "FAIL $name: exit status $status, expected 1 ($message)"
     elif [ "$lines" -ne 1 ]; then
         echo "FAIL $name: $lines lines on stderr, expected 1:"; sed 's/^/    /' "$work/stderr"
-    elif ! grep -Eq "^$file[^:]*: [^:]+: .+$" "$work/stderr"; then
-        echo "FAIL $name: not 'FILE: WHERE: WHAT' naming $file: $message"
+    elif ! grep -Eq "^$file[^:]*: $where: .+$" "$work/stderr"; then
+        echo "FAIL $name: not 'FILE: WHERE: WHAT' naming $file at $where: $message"
     elif [ -e "$work/out.png" ]; then
         echo "FAIL $name: wrote an image anyway"
     elif [ "$took" -gt 2 ]; then
@@ -40,6 +41,33 @@ check() {
     failures=$((failures + 1))
 }
 
+# Each corpus file with the exact place its error must name.
+where_of() {
+    case $1 in
+        binary_garbage.json) echo "line 1, column 1" ;;
+        binary_garbage.obj) echo "byte 27" ;;
+        deeply_nested.json) echo "\(document\)" ;;
+        empty.json) echo "line 1" ;;
+        huge_number.json) echo "line 3, column 45" ;;
+        mesh_index_out_of_range.json) echo "line 5" ;;
+        missing_mesh.json) echo "/objects/0/file" ;;
+        misspelt_key.json) echo "/materials/shiny/reflectivty" ;;
+        nan_literal.json) echo "line 3, column 44" ;;
+        nan_vertex.obj) echo "line 2" ;;
+        negative_radius.json) echo "/objects/0/radius" ;;
+        only_lines.obj) echo "faces" ;;
+        singular_matrix.json) echo "/objects/0/transform" ;;
+        trailing_comma.json) echo "line 4, column 36" ;;
+        truncated.json) echo "line 4, column 27" ;;
+        unknown_material.json) echo "/objects/0/material" ;;
+        unknown_object_type.json) echo "/objects/0/type" ;;
+        wrong_type.json) echo "/objects/0/radius" ;;
+        zero_index.obj) echo "line 4" ;;
+        zero_up.json) echo "/camera/up" ;;
+        bom_zero_index.obj) echo "line 3" ;;
+        *) echo "UNLISTED" ;;  # a new corpus file must say where its error is
+    esac
+}
 for path in "$corpus"/*.json "$corpus"/*.obj; do
     name=$(basename "$path")
     case $name in
@@ -47,7 +75,7 @@ for path in "$corpus"/*.json "$corpus"/*.obj; do
         mesh_index_out_of_range.json) expected="$corpus/index_out_of_range.obj" ;;
         *) expected=$path ;;
     esac
-    check "$name" "$expected" -- "$path"
+    check "$name" "$expected" "$(where_of "$name")" -- "$path"
 done
 
 # Made here rather than committed: huge sparse files, and NUL bytes in a text file.
@@ -69,6 +97,7 @@ check "--max-depth -1" "rtrender" -- "$scene" --max-depth -1
 check "unknown flag" "rtrender" -- "$scene" --shadows-please
 check "directory as scene" "$corpus" -- "$corpus"
 check "--gl nonsense" "rtrender" -- "$scene" --mode raster --gl nonsense
+check "--up nonsense" "rtrender" -- "$scene" --up w
 # No EGL vendor library: EGL cannot start, and --gl egl allows no fallback.
 export __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json
 check "no EGL" "rtrender" -- "$scene" --mode raster --gl egl
