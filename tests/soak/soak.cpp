@@ -1,0 +1,65 @@
+// rt_soak: loads, builds, renders and drops every shipped scene ITERATIONS times in one
+// process, and fails if the resident memory grew by more than a bound between the end
+// of the first round (allocator pools and caches warm) and the end of the last.
+//   rt_soak SCENES_DIR [ITERATIONS=100] [BOUND_MIB=16]
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "core/error.h"
+#include "core/renderer.h"
+#include "core/scene_loader.h"
+
+namespace {
+
+double resident_mib() {
+    std::ifstream statm("/proc/self/statm");
+    long pages_total = 0, pages_resident = 0;
+    statm >> pages_total >> pages_resident;
+    return static_cast<double>(pages_resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) /
+           (1024.0 * 1024.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: rt_soak SCENES_DIR [ITERATIONS] [BOUND_MIB]\n");
+        return 2;
+    }
+    const int iterations = argc > 2 ? std::atoi(argv[2]) : 100;
+    const double bound = argc > 3 ? std::atof(argv[3]) : 16.0;
+    std::vector<std::filesystem::path> scenes;
+    for (const auto& entry : std::filesystem::directory_iterator(argv[1]))
+        if (entry.path().extension() == ".json") scenes.push_back(entry.path());
+    std::sort(scenes.begin(), scenes.end());
+    double after_first = 0.0;
+    try {
+        for (int i = 0; i < iterations; ++i) {
+            for (const auto& path : scenes) {
+                rt::LoadedScene loaded = rt::load_scene(path);
+                loaded.scene.camera = loaded.scene.camera.resized(32, 24);
+                loaded.scene.build();
+                rt::RenderOptions options;
+                options.threads = 2;
+                const rt::Image image = rt::render(loaded.scene, options);
+                if (image.pixels.size() != 32u * 24u) return 1;
+            }
+            if (i == 0) after_first = resident_mib();
+        }
+    } catch (const rt::Error& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    }
+    const double after_last = resident_mib();
+    const bool ok = after_last - after_first <= bound;
+    std::printf("%zu scenes x %d: resident %.1f MiB after the first round, %.1f MiB after the "
+                "last (growth %.1f MiB, bound %.1f): %s\n",
+                scenes.size(), iterations, after_first, after_last, after_last - after_first,
+                bound, ok ? "ok" : "GREW");
+    return ok ? 0 : 1;
+}
