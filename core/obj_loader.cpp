@@ -204,8 +204,11 @@ class MtlReader : public tinyobj::MaterialReader {
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* names, std::string* warn,
                     std::string*) override {
-        std::ifstream in(dir_ / name, std::ios::binary);
-        if (!in) {
+        const std::filesystem::path path = dir_ / name;
+        std::error_code ec;
+        std::ifstream in;
+        if (std::filesystem::is_regular_file(path, ec)) in.open(path, std::ios::binary);
+        if (!in.is_open()) {  // missing, or a directory ("mtllib" with no name), or unreadable
             *warn += "material library \"" + name + "\" not found beside the OBJ file\n";
             return false;
         }
@@ -250,8 +253,10 @@ ObjData load_obj(const std::filesystem::path& path, const ObjOptions& options) {
     add_warnings(file, warn, data.warnings);
     for (const auto& m : materials) data.materials.push_back(from_mtl(m));
     const glm::dvec3 centre = used_centre(attrib, shapes);
-    if (std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)}) >
-        options.recentre_beyond)
+    if (options.origin)
+        data.origin = *options.origin;
+    else if (std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)}) >
+             options.recentre_beyond)
         data.origin = centre;
     copy_positions(file, attrib, data.origin, data.mesh);
     const bool has_normals = copy_triangles(file, attrib, shapes, data.mesh);

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,8 @@ struct ObjOptions {
     // any coordinate), store positions relative to it (ObjData::origin), taken off in
     // double precision: a model far from the origin keeps its shape in float.
     double recentre_beyond = std::numeric_limits<double>::infinity();
+    // Or store positions relative to this point (a scene's origin, core/scene_loader.h).
+    std::optional<glm::dvec3> origin;
 };
 
 struct ObjData {

@@ -69,14 +69,16 @@ class JsonSceneReader {
     Shape read_mesh(const JsonValue& j, glm::dmat4& normalize);
     // A position in world coordinates, relative to the scene's origin.
     vec3 point(const JsonValue& j) const { return vec3(j.dvector3() - origin_); }
-    std::uint32_t load_mesh(const JsonValue& file_value);
+    // The mesh of a file, read once per file and placement: `in_world` reads it
+    // relative to the scene's origin (an untransformed mesh's coordinates are the world's).
+    std::uint32_t load_mesh(const JsonValue& file_value, bool in_world);
 
     std::filesystem::path path_;
     std::string file_;
     LoadedScene& out_;
     Scene& scene_;
     std::map<std::string, std::uint32_t> material_names_;
-    std::map<std::filesystem::path, std::uint32_t> mesh_cache_;
+    std::map<std::pair<std::filesystem::path, bool>, std::uint32_t> mesh_cache_;
     glm::dvec3 origin_{0.0};  // the file's coordinates of the scene's zero
 };
 
@@ -232,8 +234,10 @@ void JsonSceneReader::read_object(const JsonValue& j) {
     glm::dmat4 pre(1.0);  // applied before the object's own transform (mesh normalisation)
     // A shape with a transform is given in its own coordinates, which the transform
     // places; one without is given in world coordinates, taken relative to the origin.
-    // A mesh's file is shared, so it is always placed by a transform.
-    const bool placed = j.has("transform") || type == "mesh";
+    // A mesh that is moved (a transform, or normalize) is placed by its transform; one
+    // that is not has its file read relative to the origin, in double precision.
+    const bool placed =
+        j.has("transform") || (type == "mesh" && j.has("normalize") && j["normalize"].boolean());
     const auto position = [&](const JsonValue& v) { return placed ? v.vector3() : point(v); };
     if (type == "sphere") {
         j.keys({"type", "name", "material", "transform", "center", "radius"});
@@ -279,7 +283,8 @@ void JsonSceneReader::read_object(const JsonValue& j) {
 }
 
 Shape JsonSceneReader::read_mesh(const JsonValue& j, glm::dmat4& normalize) {
-    const std::uint32_t index = load_mesh(j["file"]);
+    const bool normalized = j.has("normalize") && j["normalize"].boolean();
+    const std::uint32_t index = load_mesh(j["file"], !j.has("transform") && !normalized);
     if (j.has("normalize") && j["normalize"].boolean()) {
         // Largest side 1, centred on x and z, resting on y = 0.
         const Aabb b = bounds_of(scene_.meshes[index]);
@@ -293,14 +298,17 @@ Shape JsonSceneReader::read_mesh(const JsonValue& j, glm::dmat4& normalize) {
     return MeshRef{index, !j.has("material")};
 }
 
-std::uint32_t JsonSceneReader::load_mesh(const JsonValue& file_value) {
+std::uint32_t JsonSceneReader::load_mesh(const JsonValue& file_value, bool in_world) {
     const std::filesystem::path mesh_path = path_.parent_path() / file_value.string();
-    const auto cached = mesh_cache_.find(mesh_path);
+    const auto key = std::make_pair(mesh_path, in_world && origin_ != glm::dvec3(0.0));
+    const auto cached = mesh_cache_.find(key);
     if (cached != mesh_cache_.end()) return cached->second;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(mesh_path, ec))
         file_value.fail("cannot open mesh file \"" + mesh_path.string() + "\"");
-    ObjData obj = load_obj(mesh_path);
+    ObjOptions options;
+    if (key.second) options.origin = origin_;
+    ObjData obj = load_obj(mesh_path, options);
     const auto first_material = static_cast<std::uint32_t>(scene_.materials.size());
     for (Material& m : obj.materials) {
         m.name = mesh_path.filename().string() + ":" + m.name;
@@ -312,7 +320,7 @@ std::uint32_t JsonSceneReader::load_mesh(const JsonValue& file_value) {
     out_.warnings.insert(out_.warnings.end(), obj.warnings.begin(), obj.warnings.end());
     const auto index = static_cast<std::uint32_t>(scene_.meshes.size());
     scene_.meshes.push_back(std::move(obj.mesh));
-    mesh_cache_[mesh_path] = index;
+    mesh_cache_[key] = index;
     return index;
 }
 
@@ -384,7 +392,9 @@ glm::mat3 up_rotation(const std::filesystem::path& path, const std::string& up) 
 
 LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions& options) {
     const glm::mat3 rotate = up_rotation(path, options.up);
-    ObjData obj = load_obj(path, ObjOptions{.recentre_beyond = kFarFromOrigin});
+    ObjOptions obj_options;
+    obj_options.recentre_beyond = kFarFromOrigin;
+    ObjData obj = load_obj(path, obj_options);
     for (vec3& p : obj.mesh.positions) p = rotate * p;
     for (vec3& n : obj.mesh.corner_normals) n = rotate * n;
     LoadedScene out;

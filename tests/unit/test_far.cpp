@@ -3,6 +3,7 @@
 // and collapsed geometry must neither crash a traversal nor hang a build.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -43,8 +44,19 @@ std::string far_json(double o) {
            point(o, 2.5, 0, 0) + R"(}},
         {"type": "triangle", "vertices": [)" + point(o, -3, -1, -1) + ", " + point(o, -2, -1, -1) +
            ", " + point(o, -2.5, 1, -1) + R"(]},
+        {"type": "mesh", "file": "tetra)" + number(o) + R"(.obj"},
+        {"type": "mesh", "file": "tetra0.obj", "transform": {"translate": )" + point(o, 1.5, 1.5, -2) + R"(}},
         {"type": "plane", "normal": [0, 1, 0], "point": )" + point(o, 0, -1.5, 0) +
            R"(, "material": "floor"}]})";
+}
+
+// A tetrahedron beside the ball, in the file's world coordinates (offset by o).
+std::string tetra_obj(double o) {
+    std::string text;
+    for (const auto& v : {std::array{-3.5, -1.5, 1.0}, std::array{-2.5, -1.5, 1.0},
+                          std::array{-3.0, -1.5, 2.0}, std::array{-3.0, -0.5, 1.4}})
+        text += "v " + number(v[0] + o) + " " + number(v[1] + o) + " " + number(v[2] + o) + "\n";
+    return text + "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
 }
 
 // A 4-unit cube as a bare OBJ, every coordinate offset by o.
@@ -74,6 +86,8 @@ void expect_same_at_every_offset(const std::string& name, std::string (*make)(do
     const auto dir = test::temp_dir("far_" + name);
     Image reference;
     for (double o : kOffsets) {
+        test::write_file(dir / ("tetra" + number(o) + ".obj"), tetra_obj(o));
+        test::write_file(dir / "tetra0.obj", tetra_obj(0.0));
         const auto path = test::write_file(dir / (name + number(o) + extension), make(o));
         RenderStats stats;
         const Image image = render_file(path, &stats);

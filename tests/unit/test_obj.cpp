@@ -119,6 +119,20 @@ TEST(Obj, ByteOrderMarkIsSkippedInObjAndMtl) {
     EXPECT_TRUE(obj.warnings.empty());
 }
 
+// Found by fuzzing: "mtllib" with no name (or naming a directory) made the material
+// reader read a directory, which threw from deep inside the stream library.
+TEST(Obj, MtllibNamingADirectoryIsAWarning) {
+    const auto dir = test::temp_dir("obj_mtldir");
+    std::filesystem::create_directories(dir / "sub");
+    for (const char* line : {"mtllib \n", "mtllib sub\n", "mtllib sub \n"}) {
+        const auto path = test::write_file(dir / "m.obj",
+                                           std::string(line) + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        const ObjData obj = load_obj(path);
+        EXPECT_EQ(obj.mesh.triangles.size(), 1u) << line;
+        EXPECT_FALSE(obj.warnings.empty()) << line;
+    }
+}
+
 // Lines and points are drawn by neither pipeline: a file that has faces too loads, and
 // says so in one warning line.
 TEST(Obj, LinesAndPointsBesideFacesAreOneWarning) {
