@@ -11,6 +11,7 @@
 #include "app/common/size_arg.h"
 #include "app/viewer/viewer.h"
 #include "core/error.h"
+#include "core/scene_loader.h"
 
 int main(int argc, char** argv) {
     rtview::ViewerOptions options;
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
     app.add_option("--view", view, "First view")
         ->check(CLI::IsMember({"raster", "trace", "split", "diff", "itembuffer"}));
     app.add_option("--save-dir", save_dir, "Where F12 saves images (default: here)");
+    app.add_option("--up", options.up, "A bare mesh's up axis: y (default), z, x, -y, -z or -x")
+        ->check(CLI::IsMember(std::vector<std::string>(std::begin(rt::kUpAxes), std::end(rt::kUpAxes))));
     app.add_option("--accel", accel,
                    "Acceleration structure: bvh (wide, default), bvh2 (binary), grid or brute")
         ->check(CLI::IsMember({"bvh", "bvh2", "grid", "brute"}));

@@ -42,8 +42,9 @@ constexpr double kRestSeconds = 0.2;  // the camera rests this long before full 
 namespace {
 
 // The part of loading that needs no GL: parse and build. Throws rt::Error.
-std::shared_ptr<rt::Scene> read_scene(const std::string& path, rt::AccelKind accel) {
-    rt::LoadedScene loaded = rt::load_scene(path);
+std::shared_ptr<rt::Scene> read_scene(const std::string& path, rt::AccelKind accel,
+                                      const std::string& up) {
+    rt::LoadedScene loaded = rt::load_scene(path, rt::LoadOptions{.up = up});
     for (const std::string& w : loaded.warnings) std::cerr << w << '\n';
     auto scene = std::make_shared<rt::Scene>(std::move(loaded.scene));
     scene->build(accel);
@@ -54,7 +55,7 @@ std::shared_ptr<rt::Scene> read_scene(const std::string& path, rt::AccelKind acc
 
 Viewer::Viewer(const ViewerOptions& options)
     : options_(options),
-      first_scene_(read_scene(options.scene, options.accel)),  // a bad file fails before any window opens
+      first_scene_(read_scene(options.scene, options.accel, options.up)),  // a bad file fails before any window opens
       window_(options.width, options.height, "rtview"),
       view_(options.view) {
     GLFWwindow* w = window_.handle();
@@ -82,7 +83,7 @@ Viewer::~Viewer() { tracer_.cancel(); }
 
 bool Viewer::load(const std::string& path) {
     try {
-        install(read_scene(path, options_.accel), path);
+        install(read_scene(path, options_.accel, options_.up), path);
         return true;
     } catch (const std::exception& e) {
         error_ = e.what();

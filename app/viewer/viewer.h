@@ -28,6 +28,7 @@ struct ViewerOptions {
     View view = View::kSplit;
     std::filesystem::path save_dir = ".";
     rt::AccelKind accel = rt::AccelKind::kBvh;
+    std::string up = "y";  // a bare mesh's up axis (rt::LoadOptions); the panel can change it
 };
 
 struct Settings {

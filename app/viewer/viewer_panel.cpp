@@ -7,6 +7,7 @@
 
 #include "app/viewer/viewer.h"
 #include "core/compare.h"
+#include "core/scene_loader.h"
 
 namespace rtview {
 namespace {
@@ -69,6 +70,17 @@ void Viewer::draw_panel() {
         ImGui::EndCombo();
     }
     ImGui::TextDisabled("or drop a .json or .obj on the window");
+    if (std::filesystem::path(scene_path_).extension() == ".obj") {
+        // A bare mesh from a Z-up tool (scans, CAD) is seen from the top: turn it.
+        if (ImGui::BeginCombo("up axis", options_.up.c_str())) {
+            for (const char* axis : rt::kUpAxes)
+                if (ImGui::Selectable(axis, options_.up == axis) && options_.up != axis) {
+                    options_.up = axis;
+                    dropped_ = scene_path_;  // reloaded like a dropped file, next frame
+                }
+            ImGui::EndCombo();
+        }
+    }
     // The ray tracer's settings come first: their place does not move with the view.
     if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error_.c_str());
 
