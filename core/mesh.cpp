@@ -39,6 +39,9 @@ Aabb bounds_of(const TriangleMesh& mesh) {
     Aabb box;
     for (const glm::uvec3& tri : mesh.triangles)
         for (int k = 0; k < 3; ++k) box.grow(mesh.positions[tri[k]]);
+    for (const glm::uvec2& segment : mesh.segments)
+        for (int k = 0; k < 2; ++k) box.grow(mesh.positions[segment[k]]);
+    for (std::uint32_t point : mesh.points) box.grow(mesh.positions[point]);
     return box;
 }
 

@@ -21,6 +21,10 @@ struct TriangleMesh {
     std::vector<glm::uvec3> triangles;     // indices into positions
     std::vector<vec3> corner_normals;      // 3 per triangle (smooth shading); empty: flat
     std::vector<std::uint32_t> materials;  // per triangle, scene material index; may be empty
+    // Line segments and points (OBJ `l` and `p`), indices into positions: the raster view
+    // draws them; the tracer, which renders surfaces, does not see them.
+    std::vector<glm::uvec2> segments;
+    std::vector<std::uint32_t> points;
 
     // Bounds and acceleration structure; call after filling the arrays.
     void build(AccelKind kind = AccelKind::kBvh);
@@ -47,7 +51,7 @@ struct TriangleMesh {
     std::vector<std::uint32_t> leaf_pack_;
 };
 
-// The box around the triangles (unused vertices left out).
+// The box around the triangles, segments and points (unused vertices left out).
 Aabb bounds_of(const TriangleMesh& mesh);
 
 // Drops triangles that repeat an earlier one: the same three positions in the same

@@ -41,17 +41,18 @@ void add_warnings(const std::string& file, const std::string& text, std::vector<
         if (!line.empty()) out.push_back(file + ": warning: " + line);
 }
 
-// The centre of the box around the vertices that faces use, in double precision.
+// The centre of the box around the vertices that faces, lines and points use, in double.
 glm::dvec3 used_centre(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes) {
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
     const auto vertex_count = static_cast<int>(attrib.vertices.size() / 3);
     for (const tinyobj::shape_t& shape : shapes)
-        for (const tinyobj::index_t& corner : shape.mesh.indices) {
-            if (corner.vertex_index < 0 || corner.vertex_index >= vertex_count) continue;
-            const double* v = &attrib.vertices[3 * static_cast<std::size_t>(corner.vertex_index)];
-            lo = glm::min(lo, glm::dvec3(v[0], v[1], v[2]));
-            hi = glm::max(hi, glm::dvec3(v[0], v[1], v[2]));
-        }
+        for (const auto* list : {&shape.mesh.indices, &shape.lines.indices, &shape.points.indices})
+            for (const tinyobj::index_t& corner : *list) {
+                if (corner.vertex_index < 0 || corner.vertex_index >= vertex_count) continue;
+                const double* v = &attrib.vertices[3 * static_cast<std::size_t>(corner.vertex_index)];
+                lo = glm::min(lo, glm::dvec3(v[0], v[1], v[2]));
+                hi = glm::max(hi, glm::dvec3(v[0], v[1], v[2]));
+            }
     return lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
 }
 
@@ -111,6 +112,30 @@ bool copy_triangles(const std::string& file, const tinyobj::attrib_t& attrib,
     return all_normals;
 }
 
+// Polylines (`l a b c`: segments a-b, b-c) and points (`p`), with indices in range.
+void copy_lines_and_points(const tinyobj::attrib_t& attrib,
+                           const std::vector<tinyobj::shape_t>& shapes, TriangleMesh& mesh) {
+    const auto vertex_count = static_cast<int>(attrib.vertices.size() / 3);
+    const auto valid = [&](const tinyobj::index_t& i) {
+        return i.vertex_index >= 0 && i.vertex_index < vertex_count;
+    };
+    for (const tinyobj::shape_t& shape : shapes) {
+        std::size_t at = 0;
+        for (const int n : shape.lines.num_line_vertices) {
+            for (int k = 0; k + 1 < n; ++k) {
+                const auto& a = shape.lines.indices[at + k];
+                const auto& b = shape.lines.indices[at + k + 1];
+                if (valid(a) && valid(b))
+                    mesh.segments.push_back({static_cast<std::uint32_t>(a.vertex_index),
+                                             static_cast<std::uint32_t>(b.vertex_index)});
+            }
+            at += static_cast<std::size_t>(std::max(n, 0));
+        }
+        for (const auto& p : shape.points.indices)
+            if (valid(p)) mesh.points.push_back(static_cast<std::uint32_t>(p.vertex_index));
+    }
+}
+
 // The whole file, refused at once if it is too large or not text (a NUL byte in the
 // first 64 KiB), so garbage is not parsed.
 std::string read_obj_text(const std::filesystem::path& path) {
@@ -131,7 +156,7 @@ std::string read_obj_text(const std::filesystem::path& path) {
 
 // What the line-by-line check counted.
 struct ObjCounts {
-    long long vertices = 0, lines = 0, points = 0;
+    long long vertices = 0;
 };
 
 bool is_element(std::string_view line, char kind) {
@@ -183,10 +208,6 @@ ObjCounts check_obj_lines(const std::string& file, std::string_view text) {
             }
             if (corners < 3)
                 fail("a face needs at least 3 vertices, this one has " + std::to_string(corners));
-        } else if (is_element(line, 'l')) {
-            ++counts.lines;
-        } else if (is_element(line, 'p')) {
-            ++counts.points;
         }
     }
     if (max_index > counts.vertices)
@@ -233,7 +254,7 @@ ObjData load_obj(const std::filesystem::path& path, const ObjOptions& options) {
 
     const std::string text = read_obj_text(path);
     const std::string_view body = skip_utf8_bom(text);
-    const ObjCounts counts = check_obj_lines(file, body);
+    check_obj_lines(file, body);
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
@@ -264,15 +285,14 @@ ObjData load_obj(const std::filesystem::path& path, const ObjOptions& options) {
         data.warnings.push_back(file + ": warning: " + std::to_string(dropped) +
                                 " faces repeat an earlier face and were dropped");
     if (!has_normals) compute_corner_normals(data.mesh, options.crease_degrees);
-    if (counts.lines + counts.points > 0)
-        data.warnings.push_back(file + ": warning: " + std::to_string(counts.lines) +
-                                " line and " + std::to_string(counts.points) +
-                                " point elements are not drawn (rtview renders surfaces only)");
-    if (data.mesh.triangles.empty())
-        throw Error(file, "faces",
-                    counts.lines + counts.points > 0
-                        ? "no faces, only line or point elements: rtview renders surfaces"
-                        : "no faces: the file defines no surface to render");
+    copy_lines_and_points(attrib, shapes, data.mesh);
+    if (!data.mesh.segments.empty() || !data.mesh.points.empty())
+        data.warnings.push_back(
+            file + ": warning: " + std::to_string(data.mesh.segments.size()) +
+            " line segments and " + std::to_string(data.mesh.points.size()) +
+            " points are drawn by the raster view only (the tracer renders surfaces)");
+    if (data.mesh.triangles.empty() && data.mesh.segments.empty() && data.mesh.points.empty())
+        throw Error(file, "faces", "no faces, lines or points: nothing to render");
     return data;
 }
 

@@ -9,13 +9,14 @@
 #include "core/tessellate.h"
 
 namespace rt::gl {
-namespace {
 
-struct Vertex {
+struct GpuMesh::Vertex {
     glm::vec3 position;
     glm::vec3 normal;
     glm::vec3 face_normal;
 };
+
+namespace {
 
 // Sphere levels of detail: the first at or above what the sphere's size asks for.
 constexpr int kSphereLevels[] = {12, 16, 24, 32, 48, 64, 96, 128, 192, 256};
@@ -37,6 +38,17 @@ GpuMesh::GpuMesh(const TriangleMesh& mesh, bool smooth_faces) {
             vertices.push_back({mesh.positions[mesh.triangles[t][k]], n, smooth_faces ? n : face});
         }
     }
+    upload(vertices);
+}
+
+GpuMesh::GpuMesh(const std::vector<glm::vec3>& positions, GLenum mode) : mode_(mode) {
+    std::vector<Vertex> vertices;
+    vertices.reserve(positions.size());
+    for (const glm::vec3& p : positions) vertices.push_back({p, glm::vec3(0.0f), glm::vec3(0.0f)});
+    upload(vertices);
+}
+
+void GpuMesh::upload(const std::vector<Vertex>& vertices) {
     vertex_count_ = static_cast<GLsizei>(vertices.size());
     glGenVertexArrays(1, &vao_);
     glGenBuffers(1, &vbo_);
@@ -61,12 +73,20 @@ GpuMesh::~GpuMesh() {
 
 void GpuMesh::draw(GLint first_vertex, GLsizei vertex_count) const {
     glBindVertexArray(vao_);
-    glDrawArrays(GL_TRIANGLES, first_vertex, vertex_count);
+    glDrawArrays(mode_, first_vertex, vertex_count);
 }
 
 GpuScene::GpuScene(const Scene& scene) : scene_(scene), bounds_(scene.bounds()) {
-    for (const TriangleMesh& mesh : scene.meshes)
+    for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
+        const TriangleMesh& mesh = scene.meshes[m];
         meshes_.push_back(std::make_unique<GpuMesh>(mesh));
+        std::vector<glm::vec3> ends, points;
+        for (const glm::uvec2& segment : mesh.segments)
+            ends.insert(ends.end(), {mesh.positions[segment[0]], mesh.positions[segment[1]]});
+        for (std::uint32_t p : mesh.points) points.push_back(mesh.positions[p]);
+        if (!ends.empty()) lines_[m] = std::make_unique<GpuMesh>(ends, GL_LINES);
+        if (!points.empty()) points_[m] = std::make_unique<GpuMesh>(points, GL_POINTS);
+    }
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         if (const auto* tri = std::get_if<Triangle>(&scene.objects[i].shape)) {
             TriangleMesh m;
@@ -133,6 +153,16 @@ void GpuScene::add_mesh_draws(std::uint32_t object, const Object& o, const MeshR
         out.push_back(item);
         start = end;
     }
+    item.wire = true;
+    item.material = o.material;
+    item.first_vertex = 0;
+    for (const auto* wires : {&lines_, &points_}) {
+        const auto it = wires->find(ref.mesh);
+        if (it == wires->end()) continue;
+        item.mesh = it->second.get();
+        item.vertex_count = item.mesh->vertex_count();
+        out.push_back(item);
+    }
 }
 
 std::vector<DrawItem> GpuScene::draw_list(const Camera& camera) {
@@ -142,7 +172,7 @@ std::vector<DrawItem> GpuScene::draw_list(const Camera& camera) {
         const Object& o = scene_.objects[i];
         DrawItem item;
         item.model = o.transform ? o.transform->m : glm::mat4(1.0f);
-            item.material = o.material;
+        item.material = o.material;
         item.object_id = i + 1;
         if (const auto* s = std::get_if<Sphere>(&o.shape)) {
             const glm::vec3 centre = glm::vec3(item.model * glm::vec4(s->centre, 1.0f));

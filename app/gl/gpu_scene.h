@@ -18,6 +18,8 @@ class GpuMesh {
     // Non-indexed triangles: position, shading normal and face normal per corner.
     // With smooth_faces the face normal is the shading normal (analytic spheres).
     explicit GpuMesh(const TriangleMesh& mesh, bool smooth_faces = false);
+    // Lines (GL_LINES: two vertices a segment) or points (GL_POINTS), positions only.
+    GpuMesh(const std::vector<glm::vec3>& positions, GLenum mode);
     ~GpuMesh();
     GpuMesh(const GpuMesh&) = delete;
     GpuMesh& operator=(const GpuMesh&) = delete;
@@ -26,8 +28,12 @@ class GpuMesh {
     GLsizei vertex_count() const { return vertex_count_; }
 
   private:
+    struct Vertex;
+    void upload(const std::vector<Vertex>& vertices);
+
     GLuint vao_ = 0, vbo_ = 0;
     GLsizei vertex_count_ = 0;
+    GLenum mode_ = GL_TRIANGLES;
 };
 
 struct DrawItem {
@@ -42,6 +48,7 @@ struct DrawItem {
     const Plane* plane = nullptr;  // for the checker's in-plane coordinates
     bool sphere = false;           // the mesh is the unit sphere: normals are its positions
     glm::vec3 pattern_shift{0.0f};  // Scene::pattern_shift of the object and material
+    bool wire = false;  // a mesh's lines or points: raster only, unlit, not in the item buffer
 };
 
 struct DepthRange {
@@ -66,6 +73,7 @@ class GpuScene {
     const Scene& scene_;
     Aabb bounds_;
     std::vector<std::unique_ptr<GpuMesh>> meshes_;                 // per scene mesh
+    std::map<std::uint32_t, std::unique_ptr<GpuMesh>> lines_, points_;  // per scene mesh that has them
     std::map<std::uint32_t, std::unique_ptr<GpuMesh>> triangles_;  // per triangle object
     std::map<int, std::unique_ptr<GpuMesh>> spheres_;              // per level of detail
     std::unique_ptr<GpuMesh> quad_;

@@ -12,7 +12,8 @@ RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& 
     : scene_(scene),
       gpu_(scene),
       phong_(shaders / "raster.vert", shaders / "phong.frag"),
-      ids_(shaders / "raster.vert", shaders / "itembuffer.frag") {}
+      ids_(shaders / "raster.vert", shaders / "itembuffer.frag"),
+      wire_(shaders / "raster.vert", shaders / "wire.frag") {}
 
 void RasterRenderer::set_camera(Program& program, const Camera& camera) {
     const DepthRange depth = gpu_.depth_range(camera);
@@ -69,12 +70,32 @@ void RasterRenderer::draw(const Camera& camera) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);  // surfaces are two-sided, as in the tracer
-    for (const DrawItem& item : gpu_.draw_list(camera)) {
+    const std::vector<DrawItem> items = gpu_.draw_list(camera);
+    for (const DrawItem& item : items) {
+        if (item.wire) continue;
         set_object(phong_, item, camera);
         set_material(scene_.materials[item.material], item);
         item.mesh->draw(item.first_vertex, item.vertex_count);
     }
+    draw_wires(items, camera);
     check("RasterRenderer::draw");
+}
+
+// A mesh's lines and points, in its material's diffuse colour, unlit: they have no
+// normal to light. The tracer does not see them (it renders surfaces).
+void RasterRenderer::draw_wires(const std::vector<DrawItem>& items, const Camera& camera) {
+    bool any = false;
+    for (const DrawItem& item : items) {
+        if (!item.wire) continue;
+        if (!any) {
+            set_camera(wire_, camera);
+            glPointSize(3.0f);
+            any = true;
+        }
+        set_object(wire_, item, camera);
+        wire_.set("u_colour", scene_.materials[item.material].kd);
+        item.mesh->draw(item.first_vertex, item.vertex_count);
+    }
 }
 
 void RasterRenderer::draw_ids(const Camera& camera) {
@@ -83,6 +104,7 @@ void RasterRenderer::draw_ids(const Camera& camera) {
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     for (const DrawItem& item : gpu_.draw_list(camera)) {
+        if (item.wire) continue;  // the tracer's first hits are surfaces
         set_object(ids_, item, camera);
         ids_.set("u_object_id", item.object_id);
         ids_.set("u_prim_base", item.prim_base);

@@ -38,6 +38,7 @@ class RasterRenderer {
 
   private:
     void set_camera(Program& program, const Camera& camera);
+    void draw_wires(const std::vector<DrawItem>& items, const Camera& camera);
     void set_material(const Material& m, const DrawItem& item);
     void set_object(Program& program, const DrawItem& item, const Camera& camera);
     Framebuffer& target(std::unique_ptr<Framebuffer>& fb, Framebuffer::Kind kind,
@@ -47,6 +48,7 @@ class RasterRenderer {
     GpuScene gpu_;
     Program phong_;
     Program ids_;
+    Program wire_;
     std::unique_ptr<Framebuffer> colour_target_;
     std::unique_ptr<Framebuffer> id_target_;
 };

@@ -55,7 +55,6 @@ where_of() {
         nan_literal.json) echo "line 3, column 44" ;;
         nan_vertex.obj) echo "line 2" ;;
         negative_radius.json) echo "/objects/0/radius" ;;
-        only_lines.obj) echo "faces" ;;
         singular_matrix.json) echo "/objects/0/transform" ;;
         trailing_comma.json) echo "line 4, column 36" ;;
         truncated.json) echo "line 4, column 27" ;;

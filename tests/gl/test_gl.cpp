@@ -157,6 +157,29 @@ TEST_P(Gl, BrokenShaderIsALocatedError) {
     EXPECT_THROW(gl::RasterRenderer(scene, dir), Error);  // missing
 }
 
+// An OBJ of lines and points: the raster view draws them (in the material's diffuse
+// colour), the item buffer and the tracer see nothing there.
+TEST_P(Gl, LinesAndPointsAreDrawnByTheRasterOnly) {
+    const auto path = test::write_file(
+        test::temp_dir(std::string("wire_") + (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa")) /
+            "wire.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nl 1 2 4 3 1\np 1 4\n");
+    LoadedScene loaded = load_scene(path);
+    Scene& scene = loaded.scene;
+    scene.camera = scene.camera.resized(96, 72);
+    scene.build();
+    gl::RasterRenderer raster(scene);
+    const Image image = raster.render(scene.camera);
+    int drawn = 0;
+    for (const vec3& p : image.pixels) drawn += p != scene.background;
+    EXPECT_GT(drawn, 96);  // four edges across a good part of the frame
+    EXPECT_LT(drawn, 96 * 72 / 4);  // lines, not a filled square
+    const ItemBuffer ib = raster.render_item_buffer(scene.camera);
+    for (std::uint32_t id : ib.object) EXPECT_EQ(id, ItemBuffer::kEmpty);
+    const Image traced = render(scene, {});
+    for (const vec3& p : traced.pixels) EXPECT_EQ(p, scene.background);
+}
+
 INSTANTIATE_TEST_SUITE_P(Headless, Gl, ::testing::Values(gl::Backend::kEgl, gl::Backend::kOsmesa),
                          [](const auto& param_info) {
                              return param_info.param == gl::Backend::kEgl ? "egl" : "osmesa";

@@ -99,8 +99,8 @@ TEST(Obj, BadFilesGiveLocatedErrors) {
                      "a face needs at least 3 vertices, this one has 2");
     expect_obj_error("garbage_index", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 x 3\n", "line 4",
                      "face vertex \"x\" is not an index");
-    expect_obj_error("only_points", "v 0 0 0\nv 1 0 0\np 1 2\n", "faces", "only line or point");
-    expect_obj_error("empty", "", "faces", "no faces");
+    expect_obj_error("only_vertices", "v 0 0 0\nv 1 0 0\n", "faces", "no faces, lines or points");
+    expect_obj_error("empty", "", "faces", "no faces, lines or points");
 }
 
 // A byte-order mark before the first line (some Windows editors write one) is skipped:
@@ -133,15 +133,24 @@ TEST(Obj, MtllibNamingADirectoryIsAWarning) {
     }
 }
 
-// Lines and points are drawn by neither pipeline: a file that has faces too loads, and
-// says so in one warning line.
-TEST(Obj, LinesAndPointsBesideFacesAreOneWarning) {
+// Lines and points are the raster view's alone: a file of only them loads (polylines
+// become segments), and one warning line says the tracer does not see them.
+TEST(Obj, LinesAndPointsLoadWithOneWarning) {
     const auto path = test::write_file(test::temp_dir("obj_lines") / "l.obj",
-                                       "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\nl 2 3\np 1\n");
+                                       "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2 3\np 1\nl 3 9\n");
     const ObjData obj = load_obj(path);
     EXPECT_EQ(obj.mesh.triangles.size(), 1u);
+    EXPECT_EQ(obj.mesh.segments, (std::vector<glm::uvec2>{{0, 1}, {1, 2}}));  // 3-9: out of range
+    EXPECT_EQ(obj.mesh.points, (std::vector<std::uint32_t>{0}));
     ASSERT_EQ(obj.warnings.size(), 1u);
-    EXPECT_NE(obj.warnings[0].find("2 line and 1 point elements"), std::string::npos);
+    EXPECT_NE(obj.warnings[0].find("2 line segments and 1 points are drawn by the raster view only"),
+              std::string::npos);
+    const auto only = test::write_file(test::temp_dir("obj_only_lines") / "o.obj",
+                                       "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\n");
+    const ObjData lines = load_obj(only);
+    EXPECT_TRUE(lines.mesh.triangles.empty());
+    EXPECT_EQ(lines.mesh.segments.size(), 1u);
+    EXPECT_EQ(bounds_of(lines.mesh).hi, vec3(1.0f, 0.0f, 0.0f));
 }
 
 TEST(Obj, RelativeIndicesWork) {
