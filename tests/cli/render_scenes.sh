@@ -30,6 +30,14 @@ for scene in "$assets"/scenes/*.json "$assets"/models/teapot.obj; do
     echo "ok   $name"
 done
 
+# --quiet silences warnings too: an OBJ with a missing MTL file warns without it.
+cases=$((cases + 1))
+printf 'mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$out/warns.obj"
+"$rtrender" "$out/warns.obj" --size 32x24 -o "$out/warns.png" >"$out/warns.log" 2>&1
+grep -q "warning" "$out/warns.log" || fail "no warning without --quiet: $(cat "$out/warns.log")"
+"$rtrender" "$out/warns.obj" --size 32x24 -o "$out/warns.png" --quiet >"$out/warns_quiet.log" 2>&1
+if [ -s "$out/warns_quiet.log" ]; then fail "--quiet printed: $(cat "$out/warns_quiet.log")"; else echo "ok   --quiet silences warnings"; fi
+
 cases=$((cases + 1))
 if "$rtrender" "$assets/scenes/tutorial.json" --size 64x48 -o "$out/tutorial.exr" --quiet --max-depth 2 --threads 1 \
         --no-shadows --no-reflections --no-refractions >"$out/exr.log" 2>&1; then

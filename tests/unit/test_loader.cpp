@@ -153,3 +153,45 @@ TEST(Loader, ErrorsInsideAMeshNameTheMeshFile) {
 
 }  // namespace
 }  // namespace rt
+
+namespace rt {
+namespace {
+
+// A byte-order mark before a JSON scene is skipped like any whitespace.
+TEST(Loader, JsonWithAByteOrderMarkLoads) {
+    const auto path = test::write_file(
+        test::temp_dir("json_bom") / "bom.json",
+        "\xEF\xBB\xBF{\"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
+        " \"objects\": [{\"type\": \"sphere\"}]}");
+    const LoadedScene loaded = load_scene(path);
+    EXPECT_EQ(loaded.scene.objects.size(), 1u);
+}
+
+// --up turns a bare mesh so that the named axis points up (+y), keeping handedness:
+// a proper rotation, so the triangle's winding (its front) is kept too.
+TEST(Loader, UpAxisTurnsABareMesh) {
+    const auto path = test::write_file(test::temp_dir("up") / "z_up.obj",
+                                       "v 0 0 0\nv 1 0 0\nv 0 0 2\nf 1 2 3\n");
+    // The vertex (0, 0, 2), and the face normal x cross z = (0, -2, 0), turned: a rotation
+    // carries the normal along (a reflection would flip it, and the face's front).
+    const vec3 want_top[] = {{0, 2, 0}, {0, 0, 2}, {0, -2, 0}, {0, 0, -2}};
+    const vec3 want_normal[] = {{0, 0, 2}, {0, -2, 0}, {0, 0, -2}, {0, 2, 0}};
+    const char* axes[] = {"z", "y", "-z", "-y"};
+    for (int i = 0; i < 4; ++i) {
+        const LoadedScene loaded = load_scene(path, LoadOptions{.up = axes[i]});
+        const TriangleMesh& mesh = loaded.scene.meshes[0];
+        EXPECT_EQ(mesh.positions[2], want_top[i]) << axes[i];
+        EXPECT_EQ(mesh.face_normal(0), want_normal[i]) << axes[i];
+    }
+    const LoadedScene x_up = load_scene(path, LoadOptions{.up = "x"});
+    EXPECT_EQ(x_up.scene.meshes[0].positions[1], vec3(0, 1, 0));  // x became y
+    try {
+        load_scene(path, LoadOptions{.up = "w"});
+        FAIL() << "loaded";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.where(), "--up");
+    }
+}
+
+}  // namespace
+}  // namespace rt
