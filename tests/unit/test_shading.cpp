@@ -179,5 +179,76 @@ TEST(Refraction, RayThroughAGlassBallCentreComesOutStraight) {
     EXPECT_EQ(counts.refracted, 2u);
 }
 
+// The specular term away from the mirror direction, where r.v < 1 and the exponent
+// shows: a plane at y = 0 seen from straight above, lit from 45 degrees. r.v = cos 45,
+// so I = ks (1/sqrt 2)^10 I_l = ks I_l / 32 (without the power it would be ks I_l 0.707).
+TEST(Phong, SpecularIsRaisedToTheShininess) {
+    Scene scene;
+    scene.materials.push_back(test::plain(vec3(0.0f), vec3(0.0f), vec3(0.8f), 10.0f));
+    scene.lights.push_back(Light{Light::Type::kPoint, {1, 1, 0}, {}, vec3(1.0f)});
+    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
+    scene.build();
+    const Ray down{{0, 1, 0}, {0, -1, 0}};
+    Hit hit;
+    ASSERT_TRUE(scene.intersect(down, hit));
+    RayCounts counts;
+    const vec3 c = Tracer(scene, {}).phong(down, scene.surface(down, hit), counts);
+    expect_colour(c, vec3(0.8f / 32.0f), 1e-5f);
+}
+
+// A glass slab between y = 0 and y = -1 (the lower face's normal points down, out of
+// the glass), and under it at y = -3 a floor that is red only in a band around where
+// Snell's law puts the ray, worked out by hand: entering at 50 degrees, sin t = sin 50 /
+// 1.5 gives t = 30.71 degrees across the slab (tan t = 0.5937), out again at 50 degrees
+// for 2 units (2 tan 50 = 2.3835): x = 2.9772. Unbent, the ray would land at
+// 3 tan 50 = 3.575; with the indices swapped it could not enter (sin t > 1).
+TEST(Refraction, ObliqueRayFollowsSnellThroughASlab) {
+    Scene scene;
+    scene.ambient = vec3(1.0f);
+    Material glass = test::plain(vec3(0.0f), vec3(0.0f));
+    glass.transparency = 1.0f;
+    glass.ior = 1.5f;
+    scene.materials.push_back(glass);
+    scene.materials.push_back(test::plain({1.0f, 0.0f, 0.0f}, vec3(0.0f)));  // red band
+    scene.materials.push_back(test::plain({0.0f, 0.0f, 1.0f}, vec3(0.0f)));  // blue elsewhere
+    scene.objects.push_back(Object{"top", Plane{{0, 1, 0}, 0}, 0, {}});
+    scene.objects.push_back(Object{"bottom", Plane{{0, -1, 0}, 1}, 0, {}});
+    const float x = 2.9772f, half = 0.03f;
+    scene.objects.push_back(Object{"band", Triangle{{x - half, -2.999f, -50}, {x + half, -2.999f, -50},
+                                                    {x, -2.999f, 50}}, 1, {}});
+    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -3}, 2, {}});
+    scene.build();
+    const float a = glm::radians(50.0f);
+    const Ray ray{{-std::sin(a), std::cos(a), 0.0f}, {std::sin(a), -std::cos(a), 0.0f}};
+    RayCounts counts;
+    const vec3 c = Tracer(scene, {}).trace_primary(ray, counts);
+    expect_colour(c, {1.0f, 0.0f, 0.0f}, 1e-4f);
+    EXPECT_EQ(counts.refracted, 2u);
+    EXPECT_EQ(counts.reflected, 0u);
+}
+
+// Total internal reflection: from inside glass, meeting its surface at 60 degrees (past
+// the critical angle of 41.8 degrees for 1.5), no light crosses; what would have been
+// transmitted is reflected, and shows the red ceiling above.
+TEST(Refraction, TotalInternalReflectionReflectsInsteadOfGoingBlack) {
+    Scene scene;
+    scene.ambient = vec3(1.0f);
+    Material glass = test::plain(vec3(0.0f), vec3(0.0f));
+    glass.transparency = 0.9f;
+    glass.ior = 1.5f;
+    scene.materials.push_back(glass);
+    scene.materials.push_back(test::plain({1.0f, 0.0f, 0.0f}, vec3(0.0f)));
+    scene.objects.push_back(Object{"glass underside", Plane{{0, -1, 0}, 1}, 0, {}});  // y = -1
+    scene.objects.push_back(Object{"ceiling", Plane{{0, -1, 0}, 0}, 1, {}});          // y = 0
+    scene.build();
+    const float a = glm::radians(60.0f);
+    const Ray ray{{0.0f, -0.5f, 0.0f}, {std::sin(a), -std::cos(a), 0.0f}};
+    RayCounts counts;
+    const vec3 c = Tracer(scene, {}).trace_primary(ray, counts);
+    expect_colour(c, {0.9f, 0.0f, 0.0f}, 1e-4f);
+    EXPECT_EQ(counts.reflected, 1u);
+    EXPECT_EQ(counts.refracted, 0u);
+}
+
 }  // namespace
 }  // namespace rt

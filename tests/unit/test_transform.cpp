@@ -36,6 +36,35 @@ TEST(Transform, EllipsoidNormalsMatchTheAnalyticNormal) {
     }
 }
 
+// A unit sphere scaled by (3, 1, 0.5) and then turned 30 degrees about z and 40 about y:
+// M^-1 and M^-T differ there (they agree for a scale along the axes alone). The normal
+// is checked against one worked out without M^-T: the cross product of the surface's two
+// tangents at p = M u, which are M t1 and M t2 for tangents t1, t2 of the unit sphere at u.
+TEST(Transform, RotatedNonUniformScaleNormalsMatchTheTangentsCrossProduct) {
+    const glm::mat4 m = glm::rotate(glm::mat4(1.0f), glm::radians(40.0f), vec3(0, 1, 0)) *
+                        glm::rotate(glm::mat4(1.0f), glm::radians(30.0f), vec3(0, 0, 1)) *
+                        glm::scale(glm::mat4(1.0f), vec3(3.0f, 1.0f, 0.5f));
+    const Scene scene = one_object(Sphere{}, m);
+    const glm::mat3 l(m);
+    for (float a = 0.3f; a < 6.0f; a += 0.7f) {
+        for (float b = -1.2f; b < 1.3f; b += 0.6f) {
+            const vec3 u{std::cos(b) * std::cos(a), std::sin(b), std::cos(b) * std::sin(a)};
+            const vec3 t1{-std::sin(a), 0.0f, std::cos(a)};
+            const vec3 t2 = glm::cross(u, t1);
+            const vec3 p = l * u;
+            vec3 expected = glm::normalize(glm::cross(l * t1, l * t2));
+            if (glm::dot(expected, p) < 0.0f) expected = -expected;  // outward
+            const Ray ray{p + 3.0f * expected, -expected};
+            Hit hit;
+            ASSERT_TRUE(scene.intersect(ray, hit)) << a << " " << b;
+            EXPECT_NEAR(hit.t, 3.0f, 1e-3f);
+            const SurfacePoint sp = scene.surface(ray, hit);
+            EXPECT_NEAR(glm::dot(sp.normal, expected), 1.0f, 1e-4f) << a << " " << b;
+            EXPECT_NEAR(glm::dot(sp.geometric_normal, expected), 1.0f, 1e-4f) << a << " " << b;
+        }
+    }
+}
+
 TEST(Transform, TStaysTheSameUnderScaleAndTranslation) {
     // Sphere scaled by 2 and moved to z = -10: a ray from the origin meets it at z = -8.
     const glm::mat4 m =
