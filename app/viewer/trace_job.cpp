@@ -22,6 +22,7 @@ void TraceJob::submit(TraceRequest request) {
         std::lock_guard lock(mutex_);
         pending_ = std::move(request);
         running_.request_stop();
+        result_.reset();  // an untaken result of an older request is superseded: never shown
     }
     wake_.notify_all();
 }
@@ -93,6 +94,9 @@ void TraceJob::run(const TraceRequest& request, std::stop_token cancel) {
                 rt::compare_images(result.image, plain, 1.5 / 255.0).pixels_over;
         }
         std::lock_guard lock(mutex_);
+        // A request submitted while this level rendered supersedes it (submit stops the
+        // token under this lock, so the check cannot race).
+        if (cancel.stop_requested()) return;
         result_ = std::move(result);
     }
 }

@@ -47,7 +47,8 @@ class TraceJob {
     void submit(TraceRequest request);
     // Stops the running request and waits until the worker holds no scene.
     void cancel();
-    // The newest result not yet taken.
+    // The newest result not yet taken, always of the newest request: a submit drops any
+    // result of an older one, taken or not yet published.
     std::optional<TraceResult> take();
     float progress() const { return progress_.load(); }  // of the running level
     bool busy() const { return busy_.load(); }
