@@ -12,6 +12,7 @@ namespace rt::gl {
 namespace {
 
 std::atomic<std::uint64_t> g_errors{0};
+std::atomic<bool> g_installed{false};
 
 void GLAD_API_PTR on_debug_message(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei,
                                    const GLchar* message, const void*) {
@@ -35,12 +36,17 @@ bool debug_output_requested() {
 #endif
 }
 
-void install_debug_output() {
-    if (!debug_output_requested() || !GLAD_GL_KHR_debug) return;
+bool install_debug_output() {
+    g_installed = false;
+    if (!debug_output_requested() || !GLAD_GL_KHR_debug) return false;
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageCallback(on_debug_message, nullptr);
+    g_installed = true;
+    return true;
 }
+
+bool debug_output_installed() { return g_installed.load(); }
 
 std::uint64_t debug_error_count() { return g_errors.load(); }
 

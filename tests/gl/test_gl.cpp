@@ -8,6 +8,7 @@
 #include "../unit/test_util.h"
 #include "app/gl/context.h"
 #include "app/gl/debug.h"
+#include "app/gl/gl.h"
 #include "app/gl/raster_renderer.h"
 #include "core/compare.h"
 #include "core/error.h"
@@ -43,9 +44,24 @@ class Gl : public ::testing::TestWithParam<gl::Backend> {
     std::uint64_t errors_before_ = gl::debug_error_count();
 };
 
+// The context is what the shaders ask for (3.3 core, no compatibility profile), and the
+// KHR_debug callback that every "no GL error" check relies on is really listening: a
+// deliberate error must reach it.
 TEST_P(Gl, ContextIsCoreProfile33OrLater) {
-    EXPECT_NE(context_->description().find("OpenGL"), std::string::npos) << context_->description();
-    EXPECT_TRUE(gl::debug_output_requested()) << "the tests run with RTVIEW_GL_DEBUG=1";
+    GLint major = 0, minor = 0, mask = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
+    EXPECT_GE(major * 10 + minor, 33) << context_->description();
+    EXPECT_TRUE(mask & GL_CONTEXT_CORE_PROFILE_BIT) << "profile mask " << mask;
+    EXPECT_FALSE(mask & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) << "profile mask " << mask;
+    ASSERT_TRUE(gl::debug_output_requested()) << "the tests run with RTVIEW_GL_DEBUG=1";
+    ASSERT_TRUE(gl::debug_output_installed()) << "KHR_debug was asked for but is not installed";
+    const std::uint64_t before = gl::debug_error_count();
+    glBindBuffer(GL_ARRAY_BUFFER, 987654u);  // never generated: GL_INVALID_OPERATION in core
+    EXPECT_NE(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    EXPECT_GT(gl::debug_error_count(), before) << "the debug callback missed a GL error";
+    errors_before_ = gl::debug_error_count();  // that error was ours
 }
 
 const char* const kScenes[] = {"tutorial.json", "whitted.json", "cornell.json",
@@ -134,7 +150,10 @@ TEST_P(Gl, ItemBufferImagesAgreeWithFullTraversal) {
         const ImageDiff d = compare_images(a, b, 1.5 / 255.0);
         EXPECT_LE(d.share_over, 0.001) << name << ": " << d.pixels_over << " pixels disagree";
         EXPECT_LT(with.item_buffer_fallbacks, a.pixels.size() / 2) << name;
-        EXPECT_EQ(with.rays.primary, without.rays.primary);
+        // Pixels where the named object misses (a tessellated silhouette, a background
+        // pixel next to an object) fall back to a full traversal: every scene has some
+        // (1,149 to 14,410 at 200 x 150), so the fallback path is exercised here.
+        EXPECT_GT(with.item_buffer_fallbacks, 100u) << name;
     }
 }
 
