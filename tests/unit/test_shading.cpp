@@ -250,5 +250,23 @@ TEST(Refraction, TotalInternalReflectionReflectsInsteadOfGoingBlack) {
     EXPECT_EQ(counts.refracted, 0u);
 }
 
+// The checker's cells by hand: the parity of floor(x / s) + floor(y / s) + floor(z / s),
+// negative coordinates included, and defined far past where integers would overflow.
+TEST(Checker, CellsAlternateByTheSumOfTheirIndices) {
+    const Checker c{vec3(1.0f), vec3(0.0f), 2.0f};
+    EXPECT_EQ(c.at({1, 1, 1}), c.colour_a);     // cell (0, 0, 0)
+    EXPECT_EQ(c.at({3, 1, 1}), c.colour_b);     // (1, 0, 0)
+    EXPECT_EQ(c.at({3, 3, 1}), c.colour_a);     // (1, 1, 0)
+    EXPECT_EQ(c.at({3, 3, 3}), c.colour_b);     // (1, 1, 1)
+    EXPECT_EQ(c.at({-1, 1, 1}), c.colour_b);    // (-1, 0, 0)
+    EXPECT_EQ(c.at({-1, -1, 1}), c.colour_a);   // (-1, -1, 0)
+    EXPECT_EQ(c.at({-3, 1, 1}), c.colour_a);    // (-2, 0, 0)
+    EXPECT_EQ(c.at({6e30f, 1, 1}), c.colour_a); // an even cell index: float holds no odd one there
+    // A shift by whole periods (Checker::shift folds the origin into one) changes nothing.
+    const vec3 shift = c.shift({4.0e7 + 3.0, 0.0, 0.0});
+    EXPECT_NEAR(shift.x, 3.0f, 1e-6f);
+    EXPECT_EQ(c.at(vec3(0.5f, 1, 1) + shift), c.at({3.5f, 1, 1}));
+}
+
 }  // namespace
 }  // namespace rt

@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# Plants known bugs ("mutants") one at a time in a scratch copy of the tree, builds the
+# test binary that should notice, runs the tests that should fail, and counts: a mutant
+# whose tests still pass is MISSED. Every mutant must be caught; see docs/testing.md.
+# Slow (a rebuild per mutant), so not part of CI: run it after changing tests or code
+# that a mutant below touches, and add a mutant with each bug a test was written for.
+#   scripts/mutants.sh [NAME_FILTER]     e.g. scripts/mutants.sh refraction
+set -uo pipefail
+set -f  # test filters like 'Transform.*' are not file patterns
+cd "$(dirname "$0")/.."
+filter=${1:-}
+scratch=${RTVIEW_MUTANTS_DIR:-/tmp/rtview-mutants}
+src=$scratch/src
+build=$scratch/build
+mkdir -p "$src"
+# The tracked and new files as they are now, uncommitted changes included.
+git ls-files -co --exclude-standard -z | rsync -a --delete --from0 --files-from=- ./ "$src/"
+cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTVIEW_BUILD_VIEWER=OFF \
+    >"$scratch/configure.log" 2>&1 || { cat "$scratch/configure.log"; exit 1; }
+
+caught=0 missed=0 broken=0
+missed_names=()
+
+# mutant NAME FILE FROM TO TARGET TEST_COMMAND...
+# FROM must occur in FILE exactly once; TEST_COMMAND runs in the build directory and
+# must fail for the mutant to count as caught.
+mutant() {
+    local name=$1 file=$2 from=$3 to=$4 target=$5
+    shift 5
+    [ -n "$filter" ] && [[ $name != *$filter* ]] && return
+    cp "$src/$file" "$scratch/original"
+    if ! python3 - "$src/$file" "$from" "$to" <<'EOF'
+import sys
+path, old, new = sys.argv[1], sys.argv[2], sys.argv[3]
+text = open(path).read()
+if text.count(old) != 1:
+    sys.exit(f"{path}: the text to change occurs {text.count(old)} times, not once")
+open(path, "w").write(text.replace(old, new))
+EOF
+    then
+        echo "BROKEN $name: could not be planted (the code moved: update scripts/mutants.sh)"
+        broken=$((broken + 1))
+        return
+    fi
+    if ! cmake --build "$build" --target "$target" >"$scratch/$name.build.log" 2>&1; then
+        echo "caught $name (does not compile)"
+        caught=$((caught + 1))
+    elif (cd "$build" && "$@") >"$scratch/$name.test.log" 2>&1; then
+        echo "MISSED $name: the tests pass with it ($*)"
+        missed=$((missed + 1))
+        missed_names+=("$name")
+    else
+        echo "caught $name"
+        caught=$((caught + 1))
+    fi
+    cp "$scratch/original" "$src/$file"
+}
+
+unit() { echo tests/rt_tests --gtest_filter="$1"; }
+gl=(env RTVIEW_GL_DEBUG=1 tests/rt_gl_tests)
+
+# The eight the audit planted (issue 18), then others.
+mutant transform-normal core/transform.cpp \
+    't.normal = glm::transpose(glm::inverse(linear));' 't.normal = glm::inverse(linear);' \
+    rt_tests $(unit 'Transform.*')
+mutant refraction-indices-swapped core/tracer.cpp \
+    'refract_dir(glm::normalize(r.dir), sp.normal, eta_from, eta_to)' \
+    'refract_dir(glm::normalize(r.dir), sp.normal, eta_to, eta_from)' \
+    rt_tests $(unit 'Refraction.*:Refract.*')
+mutant tir-black core/tracer.cpp \
+    'return reflected(r, sp, depth, weight, counts);
+    }' 'return vec3(0.0f);
+    }' rt_tests $(unit 'Refraction.*')
+mutant compare-counts-nothing core/compare.cpp \
+    'd.pixels_over += largest > threshold;' 'd.pixels_over += 0;' \
+    rt_tests $(unit 'Compare.*')
+mutant obj-line-off-by-one core/obj_loader.cpp \
+    'throw Error(file, "line " + std::to_string(number), what);' \
+    'throw Error(file, "line " + std::to_string(number + 1), what);' \
+    rt_tests $(unit 'Obj.*')
+mutant specular-without-exponent core/tracer.cpp \
+    'm.ks * std::pow(r_dot_v, m.shininess)' 'm.ks * r_dot_v' \
+    rt_tests $(unit 'Phong.*')
+mutant refinement-skips-levels app/viewer/trace_job.cpp \
+    'for (int level : request.levels) {' 'for (int level : {request.levels.back()}) {' \
+    rt_viewer_tests tests/rt_viewer_tests --gtest_filter='TraceJob.*'
+mutant superseded-result-kept app/viewer/trace_job.cpp \
+    'result_.reset();  // an untaken result' '// an untaken result' \
+    rt_viewer_tests tests/rt_viewer_tests --gtest_filter='TraceJob.*'
+mutant gl-debug-not-installed app/gl/debug.cpp \
+    'glDebugMessageCallback(on_debug_message, nullptr);' '(void)on_debug_message;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*ContextIsCoreProfile*'
+mutant shadow-feeler-dropped core/tracer.cpp \
+    'return !scene_.occluded(Ray{p, dir}, t_max);' 'return true;' \
+    rt_tests $(unit 'Shadows.*')
+mutant pixel-centre-off-by-half core/camera.h \
+    'static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f' \
+    'static_cast<float>(x), static_cast<float>(y)' \
+    rt_tests $(unit 'Camera.*')
+mutant srgb-constant core/image.cpp '12.92f * c' '12.0f * c' rt_tests $(unit 'Image.*')
+mutant wide-bvh-skips-a-child core/wide_bvh.h \
+    'for (mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
+    'for (mask &= mask - 1, mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
+    rt_tests $(unit '*WideBvh*:*Accel*')
+mutant glsl-specular-dropped shaders/phong.frag \
+    'colour += (u_kd * c * n_dot_l + specular) * u_light_colour[i];' \
+    'colour += (u_kd * c * n_dot_l) * u_light_colour[i];' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*RasterEqualsLocal*'
+mutant far-scenes-not-rebased core/scene_loader.cpp \
+    'constexpr double kFarFromOrigin = 4096.0;' 'constexpr double kFarFromOrigin = 1e300;' \
+    rt_tests $(unit 'Far.*')
+mutant nan-rays-enter-boxes core/ray.h \
+    'return sum == 0.0f;  // x * 0 is NaN' 'return sum == sum || true;  // x * 0 is NaN' \
+    rt_tests $(unit 'Far.*')
+mutant repeated-faces-kept core/obj_loader.cpp \
+    'if (const std::size_t dropped = drop_duplicate_triangles(data.mesh))' \
+    'if (const std::size_t dropped = 0)' rt_tests $(unit 'Obj.*')
+mutant nan-pixels-not-counted core/compare.cpp \
+    'if (!finite(a) || !finite(b)) return vec3(1.0f);' 'if (false) return vec3(1.0f);' \
+    rt_tests $(unit 'Compare.*')
+mutant checker-parity-wrong core/material.h \
+    'return sum == 0.0f || sum == 2.0f ? colour_a : colour_b;' \
+    'return sum == 0.0f ? colour_a : colour_b;' \
+    rt_tests $(unit 'Checker.*')
+
+echo "$caught caught, $missed missed, $broken could not be planted"
+[ "$missed" -gt 0 ] && echo "missed: ${missed_names[*]}"
+[ "$missed" -eq 0 ] && [ "$broken" -eq 0 ]
