@@ -1,6 +1,7 @@
 #include "core/json_reader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -60,6 +61,31 @@ std::string parse_error_detail(std::string message) {
                                                                  : message;
 }
 
+// Where `literal` stands as a number in the JSON text: outside strings, and not part of a
+// longer token (the same digits in a name, or in a longer number, do not count).
+std::size_t find_number(const std::string& text, const std::string& literal) {
+    const auto in_number = [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-';
+    };
+    bool in_string = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (c == '\\') ++i;
+            else if (c == '"') in_string = false;
+            continue;
+        }
+        if (c == '"') {
+            in_string = true;
+            continue;
+        }
+        if (text.compare(i, literal.size(), literal) == 0 && (i == 0 || !in_number(text[i - 1])) &&
+            (i + literal.size() == text.size() || !in_number(text[i + literal.size()])))
+            return i;
+    }
+    return std::string::npos;
+}
+
 std::string line_and_column(const std::string& text, std::size_t byte) {
     std::size_t line = 1, column = 1;
     for (std::size_t i = 0; i < std::min(byte, text.size()); ++i) {
@@ -112,7 +138,7 @@ nlohmann::json parse_json_file(const std::filesystem::path& path) {
         const std::string message = parse_error_detail(e.what());
         const auto open = message.find('\''), close = message.rfind('\'');
         const std::string literal = open < close ? message.substr(open + 1, close - open - 1) : "";
-        const std::size_t at = literal.empty() ? std::string::npos : text.find(literal);
+        const std::size_t at = literal.empty() ? std::string::npos : find_number(text, literal);
         throw Error(file, at == std::string::npos ? "(document)" : line_and_column(text, at + 1),
                     message);
     } catch (const TooDeep&) {

@@ -98,7 +98,12 @@ const std::vector<BadCase> kBadCases = {
      with_camera(R"("objects": [{"type": "sphere", "transform": {"scale": [1, 0, 1]}}])"),
      "/objects/0/transform", "singular"},
     {"huge_number", with_camera(R"("objects": [{"type": "sphere", "center": [1e999, 0, 0]}])"),
-     "line 1, column", "number overflow"},
+     "line 1, column 92", "number overflow"},
+    // The same characters earlier in a name are not the number.
+    {"huge_number_after_name",
+     "{\"camera\": {\"eye\": [0,0,5], \"look_at\": [0,0,0]},\n \"objects\": [\n"
+     "  {\"type\": \"sphere\", \"name\": \"1e999\"},\n  {\"type\": \"sphere\", \"radius\": 1e999}]}",
+     "line 4, column 32", "number overflow"},
     {"float_overflow", with_camera(R"("objects": [{"type": "sphere", "radius": 1e300}])"),
      "/objects/0/radius", "too large"},
     {"unknown_material", with_camera(R"("objects": [{"type": "sphere", "material": "gold"}])"),
