@@ -26,6 +26,28 @@ for scene in "$assets"/scenes/*.json "$assets"/models/teapot.obj; do
         grep -q "\"$key\"" "$out/$name.stats.json" || fail "$name: stats lack \"$key\""
     done
     grep -q '"primary": 6912' "$out/$name.stats.json" || fail "$name: expected 96x72 = 6912 primary rays"
+    # The values, not only the keys: sizes as asked, times and rates positive, shadow
+    # feelers cast (every shipped scene has lights), the ray total the sum of its kinds.
+    python3 - "$out/$name.stats.json" <<'PY' || fail "$name: stats values: $(cat "$out/$name.stats.json")"
+import json, sys
+s = json.load(open(sys.argv[1]))
+def find(d, key):
+    if isinstance(d, dict):
+        if key in d: return d[key]
+        for v in d.values():
+            r = find(v, key)
+            if r is not None: return r
+    return None
+assert s["width"] == 96 and s["height"] == 72, "size"
+assert s["threads"] >= 1, "threads"
+for key in ("trace_seconds", "mrays_per_s"):
+    assert find(s, key) > 0, key
+assert find(s, "load_seconds") >= 0 and find(s, "build_seconds") >= 0, "load/build"
+assert find(s, "shadow") > 0, "no shadow feelers"
+assert find(s, "primary") == 96 * 72, "primary"
+r = s["rays"]
+assert r["total"] == r["primary"] + r["shadow"] + r["reflected"] + r["refracted"], "total"
+PY
     grep -q '"nonfinite_pixels": 0' "$out/$name.stats.json" || fail "$name: NaN/Inf pixels"
     echo "ok   $name"
 done
