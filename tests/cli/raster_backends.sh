@@ -15,3 +15,13 @@ for scene in tutorial whitted cornell many_spheres; do
         echo "ok   $scene $mode: EGL and OSMesa identical"
     done
 done
+
+# --gl auto falls back to OSMesa when EGL cannot start (no EGL vendor library here), and
+# renders the same image.
+__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json "$rtrender" "$assets/scenes/tutorial.json" \
+    --mode raster --gl auto --size 200x150 -o "$out/auto.png" >"$out/auto.log" 2>&1 \
+    || { echo "FAIL --gl auto without EGL: $(cat "$out/auto.log")"; exit 1; }
+grep -q "^OpenGL: OSMesa" "$out/auto.log" || { echo "FAIL --gl auto did not say it fell back to OSMesa: $(cat "$out/auto.log")"; exit 1; }
+idiff -q -fail 0 -failpercent 0 "$out/auto.png" "$out/tutorial.raster.osmesa.png" \
+    || { echo "FAIL --gl auto (OSMesa) differs from --gl osmesa"; exit 1; }
+echo "ok   --gl auto falls back to OSMesa when EGL cannot start"

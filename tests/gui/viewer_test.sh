@@ -80,6 +80,13 @@ check "saved four files" test -s "$work/saves/rtview-1.view.png" -a -s "$work/sa
 check "saved view matches the window" at_most 20 "$work/saves/rtview-1.view.png" "$work/swapped.png"
 check "saved traced image is rtrender's" at_most 20 "$work/saves/rtview-1.trace.png" "$work/ref.trace.png"
 check "saved raster image is rtrender's" at_most 20 "$work/saves/rtview-1.raster.png" "$work/ref.raster.png"
+# The saved difference shows exactly where the saved raster and traced images differ: its
+# lit pixels (the colour bar cropped off) about as many as the pixels that differ.
+convert "$work/saves/rtview-1.diff.png" -crop "${W}x$H+0+0" +repage "$work/saved_diff.png"
+lit=$(convert "$work/saved_diff.png" -colorspace gray -threshold 2% -format "%[fx:round(mean*w*h)]" info:)
+differ=$(compare -metric AE -fuzz 1% "$work/saves/rtview-1.raster.png" "$work/saves/rtview-1.trace.png" null: 2>&1 || true)
+check "saved difference lights the $differ differing pixels ($lit lit)" \
+    test "${differ%.*}" -gt 1000 -a "$lit" -gt "$((${differ%.*} / 2))" -a "$lit" -lt "$((${differ%.*} * 2))"
 
 # Orbit, then reset: the view changes, and R brings back the first one.
 after "^view: raster" key 1 && settle
@@ -114,6 +121,18 @@ check "item buffer on: at most 0.1% of pixels disagree ($line)" \
 # Resizing (down to 1x1, up to 4K), hiding the window, and quick scene switches never crash.
 for size in "1 1" "3840 2160" "1200 300" "200 900" "$W $H"; do xdotool windowsize "$wid" $size; sleep 0.3; done
 xdotool windowunmap "$wid"; sleep 0.5; xdotool windowmap "$wid"; sleep 0.3
+# Back at its size, the window shows the traced view again, whole: wait for it (up to
+# 15 s) rather than trusting a sleep, and compare with rtrender's image of it.
+key h  # hide the panel, as when the reference was grabbed
+redrawn=1
+for _ in $(seq 30); do
+    sleep 0.5
+    grab resized
+    if at_most 600 "$work/resized.png" "$work/ref_noshadow.png" >/dev/null; then redrawn=0; break; fi
+done
+check "after the resizes the traced view is drawn again at ${W}x$H" test "$redrawn" -eq 0
+check "  ... at its size" test "$(identify -format %wx%h "$work/resized.png")" = "${W}x$H"
+key h
 after "^scene:" key Next Next Next Next Next Next Next Prior
 after "^traced:" true
 check "still running after resizes, unmapping and scene switches" kill -0 "$app_pid"
