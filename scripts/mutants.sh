@@ -15,7 +15,7 @@ build=$scratch/build
 mkdir -p "$src"
 # The tracked and new files as they are now, uncommitted changes included.
 git ls-files -co --exclude-standard -z | rsync -a --delete --from0 --files-from=- ./ "$src/"
-cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTVIEW_BUILD_VIEWER=OFF \
+cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     >"$scratch/configure.log" 2>&1 || { cat "$scratch/configure.log"; exit 1; }
 
 caught=0 missed=0 broken=0
@@ -43,8 +43,9 @@ EOF
         return
     fi
     if ! cmake --build "$build" --target "$target" >"$scratch/$name.build.log" 2>&1; then
-        echo "caught $name (does not compile)"
-        caught=$((caught + 1))
+        # A mutant that does not compile proves nothing about the tests.
+        echo "BROKEN $name: does not compile (see $scratch/$name.build.log)"
+        broken=$((broken + 1))
     elif (cd "$build" && "$@") >"$scratch/$name.test.log" 2>&1; then
         echo "MISSED $name: the tests pass with it ($*)"
         missed=$((missed + 1))
