@@ -22,8 +22,10 @@ bool intersect_shape(const Scene& scene, const Shape& shape, const Ray& r, Hit& 
                        return h.has_value();
                    },
                    [&](const auto& analytic) {
+                       // A sphere or plane has no triangle: the whole record is replaced,
+                       // so no earlier mesh hit's triangle and barycentrics stay behind.
                        const auto t = intersect(analytic, r, hit.t);
-                       if (t) hit.t = *t;
+                       if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};
                        return t.has_value();
                    }},
         shape);

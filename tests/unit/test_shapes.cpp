@@ -3,6 +3,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/scene.h"
 #include "core/shapes.h"
 
 namespace rt {
@@ -124,6 +125,39 @@ TEST(RayOffset, MovesToTheRequestedSideAtEveryScale) {
         EXPECT_LT(glm::length(out - p), 1e-4f * scale + 1e-4f) << scale;  // small against the scale
         EXPECT_LT(glm::dot(offset_ray_origin(p, -n) - p, n), 0.0f) << scale;
     }
+}
+
+}  // namespace
+}  // namespace rt
+
+namespace rt {
+namespace {
+
+// The BVH visits the mesh first (its box starts nearer: a sliver at z = 5 stretches it)
+// and records a hit on its big back triangle, with its barycentrics; the sphere in front
+// is nearer and replaces the record whole: no triangle index or barycentrics stay behind.
+TEST(Scene, ASphereHitReplacesAnEarlierMeshHitWhole) {
+    Scene scene;
+    scene.materials.push_back(Material{});
+    TriangleMesh mesh;
+    mesh.positions = {{3, 3, 5}, {3.1f, 3, 5}, {3, 3.1f, 5},
+                      {-10, -10, -10}, {10, -10, -10}, {0, 10, -10}};
+    mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
+    scene.meshes.push_back(std::move(mesh));
+    scene.objects.push_back(Object{"mesh", MeshRef{0, false}, 0, {}});
+    scene.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
+    scene.build();
+    const Ray ray{{0.2f, 0.1f, 10}, {0, 0, -1}};
+    Hit mesh_only;
+    ASSERT_TRUE(scene.intersect_object(0, ray, mesh_only));
+    ASSERT_EQ(mesh_only.prim, 1u);
+    ASSERT_GT(mesh_only.b1 + mesh_only.b2, 0.0f);
+    Hit hit;
+    ASSERT_TRUE(scene.intersect(ray, hit));
+    EXPECT_EQ(hit.object, 1u);
+    EXPECT_EQ(hit.prim, 0u);
+    EXPECT_EQ(hit.b1, 0.0f);
+    EXPECT_EQ(hit.b2, 0.0f);
 }
 
 }  // namespace
