@@ -56,7 +56,11 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) cons
     for (const Light& light : scene_.lights) {
         vec3 to_light;
         light.feeler(sp.p, to_light);
-        to_light = glm::normalize(to_light);
+        // A point light exactly on the surface has no direction: it lights nothing there
+        // (the limit of n.l as the light comes down onto a plane), rather than NaN.
+        const float distance = glm::length(to_light);
+        if (!(distance > 0.0f) || !std::isfinite(distance)) continue;
+        to_light /= distance;
         const float n_dot_l = glm::dot(sp.normal, to_light);
         if (n_dot_l <= 0.0f) continue;  // the light is behind the surface
         if (!visible(p, sp, light, counts)) continue;

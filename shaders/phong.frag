@@ -95,7 +95,9 @@ void main() {
     vec3 colour = u_ka * c * u_ambient;
     for (int i = 0; i < u_light_count; ++i) {
         vec3 to_light = u_light_directional[i] == 1 ? -u_light_vector[i] : u_light_vector[i] - s.world;
-        to_light = normalize(to_light);
+        float distance = length(to_light);
+        if (!(distance > 0.0)) continue;  // a light on the surface lights nothing there (core/tracer.cpp)
+        to_light /= distance;
         float n_dot_l = dot(n, to_light);
         if (n_dot_l <= 0.0) continue;
         float r_dot_v = max(0.0, dot(reflect(-to_light, n), to_viewer));

@@ -268,5 +268,19 @@ TEST(Checker, CellsAlternateByTheSumOfTheirIndices) {
     EXPECT_EQ(c.at(vec3(0.5f, 1, 1) + shift), c.at({3.5f, 1, 1}));
 }
 
+// A point light exactly at the surface point gives that point ambient light only, not
+// NaN (normalising the zero vector to the light).
+TEST(Phong, LightOnTheSurfaceGivesAmbientNotNaN) {
+    Scene scene;
+    scene.ambient = vec3(0.25f);
+    scene.materials.push_back(test::plain(vec3(1.0f), vec3(0.8f), vec3(0.5f), 8.0f));
+    scene.lights.push_back(Light{Light::Type::kPoint, {0, 0, 0}, {}, vec3(1.0f)});
+    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
+    scene.build();
+    RayCounts counts;
+    const vec3 c = Tracer(scene, {}).trace_primary(Ray{{0, 1, 0}, {0, -1, 0}}, counts);
+    expect_colour(c, vec3(0.25f));
+}
+
 }  // namespace
 }  // namespace rt
