@@ -15,7 +15,7 @@ build=$scratch/build
 mkdir -p "$src"
 # The tracked and new files as they are now, uncommitted changes included.
 git ls-files -co --exclude-standard -z | rsync -a --delete --from0 --files-from=- ./ "$src/"
-cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTVIEW_BUILD_VIEWER=ON \
     >"$scratch/configure.log" 2>&1 || { cat "$scratch/configure.log"; exit 1; }
 
 caught=0 missed=0 broken=0
