@@ -14,6 +14,8 @@ class Context {
     virtual ~Context() = default;
     // "EGL surfaceless: llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6"
     const std::string& description() const { return description_; }
+    // Makes this context current on the calling thread again (after another was).
+    virtual void make_current() = 0;
 
   protected:
     std::string description_;

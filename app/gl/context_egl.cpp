@@ -4,6 +4,8 @@
 #include <EGL/eglext.h>
 
 #include <cstdio>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +20,31 @@ std::string egl_error(const char* what) {
     char code[16];
     std::snprintf(code, sizeof code, "0x%04x", static_cast<unsigned>(eglGetError()));
     return std::string(what) + " failed (EGL error " + code + ")";
+}
+
+// An EGL display is one per process and platform: eglTerminate on it ends every context
+// made on it. So each context holds a reference, and the last one terminates.
+class DisplayRefs {
+  public:
+    void add(EGLDisplay d) {
+        std::lock_guard lock(mutex_);
+        ++count_[d];
+    }
+    void release(EGLDisplay d) {
+        std::lock_guard lock(mutex_);
+        if (--count_[d] > 0) return;
+        count_.erase(d);
+        eglTerminate(d);
+    }
+
+  private:
+    std::mutex mutex_;
+    std::map<EGLDisplay, int> count_;
+};
+
+DisplayRefs& display_refs() {
+    static DisplayRefs refs;
+    return refs;
 }
 
 EGLDisplay device_display() {
@@ -49,6 +76,7 @@ class EglContext : public Context {
             if (display_ == EGL_NO_DISPLAY)
                 throw std::runtime_error("no surfaceless platform and no usable EGL device");
         }
+        display_refs().add(display_);
         if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)");
         const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
                                      3,
@@ -75,6 +103,11 @@ class EglContext : public Context {
 
     ~EglContext() override { release(); }
 
+    void make_current() override {
+        if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+            throw std::runtime_error(egl_error("eglMakeCurrent"));
+    }
+
   private:
     [[noreturn]] void fail(const char* what) {
         const std::string message = egl_error(what);
@@ -86,7 +119,7 @@ class EglContext : public Context {
         if (display_ == EGL_NO_DISPLAY) return;
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-        eglTerminate(display_);
+        display_refs().release(display_);  // terminated when no other context uses it
         display_ = EGL_NO_DISPLAY;
     }
 

@@ -40,6 +40,11 @@ class OsmesaContext : public Context {
         }
     }
 
+    void make_current() override {
+        if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1))
+            throw std::runtime_error("OSMesaMakeCurrent failed");
+    }
+
     ~OsmesaContext() override {
         // Released first: a context destroyed while current keeps its framebuffer.
         OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);

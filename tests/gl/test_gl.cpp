@@ -199,6 +199,25 @@ TEST_P(Gl, LinesAndPointsAreDrawnByTheRasterOnly) {
     for (const vec3& p : traced.pixels) EXPECT_EQ(p, scene.background);
 }
 
+// Two EGL contexts share the process's one EGL display: destroying the first must leave
+// the second working (eglTerminate on the shared display used to end both).
+TEST(GlContexts, DestroyingOneEglContextLeavesTheOtherWorking) {
+    auto first = gl::create_headless_context(gl::Backend::kEgl, "rt_gl_tests");
+    auto second = gl::create_headless_context(gl::Backend::kEgl, "rt_gl_tests");
+    LoadedScene loaded = load_scene(test::scene_path("tutorial.json"));
+    loaded.scene.camera = loaded.scene.camera.resized(64, 48);
+    loaded.scene.build();
+    first->make_current();
+    const Image before = gl::RasterRenderer(loaded.scene).render(loaded.scene.camera);
+    first.reset();
+    second->make_current();
+    const Image after = gl::RasterRenderer(loaded.scene).render(loaded.scene.camera);
+    EXPECT_EQ(compare_images(before, after).pixels_over, 0u);
+    int lit = 0;
+    for (const vec3& p : after.pixels) lit += p != loaded.scene.background;
+    EXPECT_GT(lit, 64 * 48 / 4);
+}
+
 INSTANTIATE_TEST_SUITE_P(Headless, Gl, ::testing::Values(gl::Backend::kEgl, gl::Backend::kOsmesa),
                          [](const auto& param_info) {
                              return param_info.param == gl::Backend::kEgl ? "egl" : "osmesa";
