@@ -12,7 +12,6 @@ namespace rt {
 namespace {
 
 constexpr int kBins = 16;
-constexpr float kTraversalCost = 1.0f;         // relative to one primitive test
 constexpr std::uint32_t kParallelMin = 20000;  // subtrees smaller than this are built in place
 
 // A box in SIMD lanes x, y, z (the fourth is spare), so growing it is two instructions.

@@ -25,7 +25,8 @@ struct alignas(64) WideBvhNode {
 
     Float bounds[6];         // lo x, y, z, hi x, y, z; lane = child; unused: lo +inf, hi -inf
     std::uint32_t child[N];  // interior child: node index; leaf: its first slot
-    std::uint32_t count[N];  // leaf: primitives (1..4); interior child or unused lane: 0
+    std::uint32_t count[N];  // leaf: primitives (up to the leaf size, more where the build
+                             // stopped: depth limit, coincident centres); interior or unused: 0
 };
 static_assert(sizeof(WideBvhNode<4>) == 128, "whole cache lines");
 

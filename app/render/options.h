@@ -14,7 +14,7 @@ struct Options {
     std::string stats;           // JSON file, empty: none
     std::string mode = "trace";  // trace | raster | both | itembuffer
     std::string gl = "auto";     // egl | osmesa | auto
-    std::string accel = "bvh";   // bvh | grid | brute
+    std::string accel = "bvh";   // bvh (wide) | bvh2 (binary) | grid | brute
     std::string up = "y";        // a bare mesh's up axis (rt::LoadOptions)
     bool item_buffer = false;
     int threads = 0;
