@@ -4,7 +4,10 @@
 #include <glm/geometric.hpp>
 
 #include "core/scene.h"
+#include "core/scene_loader.h"
 #include "core/shapes.h"
+#include "core/triangle4.h"
+#include "test_util.h"
 
 namespace rt {
 namespace {
@@ -158,6 +161,46 @@ TEST(Scene, ASphereHitReplacesAnEarlierMeshHitWhole) {
     EXPECT_EQ(hit.prim, 0u);
     EXPECT_EQ(hit.b1, 0.0f);
     EXPECT_EQ(hit.b2, 0.0f);
+}
+
+}  // namespace
+}  // namespace rt
+
+namespace rt {
+namespace {
+
+// The item buffer names a mesh triangle per pixel and the tracer tests that triangle
+// alone (Scene::intersect_primitive); a full traversal finds the closest hit among all.
+// For rays through the interior of the triangle that the traversal hits, both must give
+// the same hit, bit for bit: the same watertight test, the same t bound.
+TEST(Triangle, ItemBufferTestAgreesWithTraversalBitForBit) {
+    LoadedScene loaded = load_scene(test::source_dir() / "assets/models/stanford-bunny.obj");
+    Scene& scene = loaded.scene;
+    scene.build();
+    const TriangleMesh& mesh = scene.meshes[0];
+    std::uint32_t state = 12345;
+    const auto uniform = [&] {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    };
+    int compared = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const auto prim = static_cast<std::uint32_t>(uniform() * static_cast<float>(mesh.triangles.size()));
+        const glm::uvec3 idx = mesh.triangles[prim];
+        float u = 0.05f + 0.45f * uniform(), v = 0.05f + 0.45f * uniform();
+        const vec3 target = (1.0f - u - v) * mesh.positions[idx[0]] + u * mesh.positions[idx[1]] +
+                            v * mesh.positions[idx[2]];
+        const Ray ray{scene.camera.eye, target - scene.camera.eye};
+        Hit full;
+        if (!scene.intersect(ray, full) || full.prim != prim) continue;  // hidden behind another
+        Hit named;
+        ASSERT_TRUE(scene.intersect_primitive(0, prim, ray, named)) << i;
+        EXPECT_EQ(named.t, full.t) << i;
+        EXPECT_EQ(named.b1, full.b1) << i;
+        EXPECT_EQ(named.b2, full.b2) << i;
+        ++compared;
+    }
+    EXPECT_GT(compared, 5000);
 }
 
 }  // namespace
