@@ -358,11 +358,12 @@ LoadedScene load_json_scene(const std::filesystem::path& path) {
 
 void frame_bounds(Scene& scene, const Aabb& bounds, int cols, int rows) {
     const vec3 centre = bounds.centre();
-    // Never closer than float can tell apart from the centre: collapsed geometry far
-    // from the origin would otherwise put the eye on the target (a NaN camera).
+    // Never so close that float cannot tell the eye from the centre (a few float
+    // spacings away at least): collapsed geometry would otherwise put the eye on the
+    // target (a NaN camera). Anything larger keeps its own size on screen.
     const float magnitude =
         std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)});
-    const float radius = std::max({0.5f * glm::length(bounds.extent()), 1e-6f, 1e-4f * magnitude});
+    const float radius = std::max({0.5f * glm::length(bounds.extent()), 1e-6f, 2e-7f * magnitude});
     const float fov = 40.0f;
     const float distance = radius / std::sin(glm::radians(fov) * 0.5f) * 1.05f;
     const vec3 view_dir = glm::normalize(vec3(0.35f, 0.3f, 1.0f));

@@ -77,7 +77,14 @@ bool Tracer::visible(const vec3& p, const SurfacePoint& sp, const Light& light,
     if (!options_.shadows) return true;
     vec3 dir;
     const float t_max = light.feeler(p, dir);
-    if (glm::dot(dir, sp.geometric_normal) <= 0.0f) return false;  // behind the true surface
+    if (glm::dot(dir, sp.geometric_normal) <= 0.0f) {
+        // Behind the offset origin. Decide from the true surface point: a light behind the
+        // surface is not seen; one in front but nearer than the offset (a small model,
+        // far enough out that float's step there is large) leaves no room for a blocker.
+        vec3 from_surface;
+        light.feeler(sp.p, from_surface);
+        return glm::dot(from_surface, sp.geometric_normal) > 0.0f;
+    }
     ++counts.shadow;
     return !scene_.occluded(Ray{p, dir}, t_max);
 }

@@ -110,6 +110,28 @@ TEST(Far, BareObjLooksTheSameAtAnyOffset) {
     expect_same_at_every_offset("cube", far_cube_obj, ".obj");
 }
 
+// A 1 mm cube 1000 units out is framed and lit as at the origin: the camera's minimum
+// distance follows float's spacing there (a larger share of the coordinates framed it
+// far too small: 31 % of pixels differed), and a light nearer than the shadow feeler's
+// offset still lights it (it went dark). Read as float (it is nearer than 4096), its
+// corners move by up to half a float step (6e-5, 2.4 % of its size): 3.2 % of pixels
+// differ along its edges; 5 % is allowed.
+TEST(Far, TinyModelAwayFromTheOriginKeepsItsSizeOnScreen) {
+    const auto dir = test::temp_dir("far_tiny");
+    const auto tiny = [](double o) {
+        std::string text;
+        for (int i = 0; i < 8; ++i)
+            text += "v " + number((i & 4 ? 5e-4 : -5e-4) + o) + " " + number((i & 2 ? 5e-4 : -5e-4) + o) +
+                    " " + number((i & 1 ? 5e-4 : -5e-4) + o) + "\n";
+        for (const char* f : {"1 2 4 3", "5 7 8 6", "1 5 6 2", "3 4 8 7", "1 3 7 5", "2 6 8 4"})
+            text += std::string("f ") + f + "\n";
+        return text;
+    };
+    const Image near = render_file(test::write_file(dir / "tiny0.obj", tiny(0.0)), nullptr);
+    const Image far = render_file(test::write_file(dir / "tiny1000.obj", tiny(1e3)), nullptr);
+    EXPECT_LE(compare_images(near, far).share_over, 0.05);
+}
+
 // The Stanford bunny 1e7 units out: in float its vertices would collapse onto a few
 // points; read relative to its centre in double it is the bunny at the origin.
 TEST(Far, BunnyFarAwayIsTheBunny) {
