@@ -179,6 +179,14 @@ TEST(Refraction, RayThroughAGlassBallCentreComesOutStraight) {
     EXPECT_EQ(counts.refracted, 2u);
 }
 
+// Glass of index 1.5 that only transmits (no local shading, no reflection).
+Material clear_glass(float transparency) {
+    Material glass = test::plain(vec3(0.0f), vec3(0.0f));
+    glass.transparency = transparency;
+    glass.ior = 1.5f;
+    return glass;
+}
+
 // The specular term away from the mirror direction, where r.v < 1 and the exponent
 // shows: a plane at y = 0 seen from straight above, lit from 45 degrees. r.v = cos 45,
 // so I = ks (1/sqrt 2)^10 I_l = ks I_l / 32 (without the power it would be ks I_l 0.707).
@@ -205,10 +213,7 @@ TEST(Phong, SpecularIsRaisedToTheShininess) {
 TEST(Refraction, ObliqueRayFollowsSnellThroughASlab) {
     Scene scene;
     scene.ambient = vec3(1.0f);
-    Material glass = test::plain(vec3(0.0f), vec3(0.0f));
-    glass.transparency = 1.0f;
-    glass.ior = 1.5f;
-    scene.materials.push_back(glass);
+    scene.materials.push_back(clear_glass(1.0f));
     scene.materials.push_back(test::plain({1.0f, 0.0f, 0.0f}, vec3(0.0f)));  // red band
     scene.materials.push_back(test::plain({0.0f, 0.0f, 1.0f}, vec3(0.0f)));  // blue elsewhere
     scene.objects.push_back(Object{"top", Plane{{0, 1, 0}, 0}, 0, {}});
@@ -233,10 +238,7 @@ TEST(Refraction, ObliqueRayFollowsSnellThroughASlab) {
 TEST(Refraction, TotalInternalReflectionReflectsInsteadOfGoingBlack) {
     Scene scene;
     scene.ambient = vec3(1.0f);
-    Material glass = test::plain(vec3(0.0f), vec3(0.0f));
-    glass.transparency = 0.9f;
-    glass.ior = 1.5f;
-    scene.materials.push_back(glass);
+    scene.materials.push_back(clear_glass(0.9f));
     scene.materials.push_back(test::plain({1.0f, 0.0f, 0.0f}, vec3(0.0f)));
     scene.objects.push_back(Object{"glass underside", Plane{{0, -1, 0}, 1}, 0, {}});  // y = -1
     scene.objects.push_back(Object{"ceiling", Plane{{0, -1, 0}, 0}, 1, {}});          // y = 0
