@@ -13,8 +13,11 @@ scratch=${RTVIEW_MUTANTS_DIR:-/tmp/rtview-mutants}
 src=$scratch/src
 build=$scratch/build
 mkdir -p "$src"
-# The tracked and new files as they are now, uncommitted changes included.
-git ls-files -co --exclude-standard -z | rsync -a --delete --from0 --files-from=- ./ "$src/"
+# The tracked and new files as they are now, uncommitted changes included. Compared by
+# content, and a changed file gets a new time (not its own), so that the build sees it
+# as newer than objects left by an earlier run.
+git ls-files -co --exclude-standard -z |
+    rsync -rlpD --checksum --no-times --delete --from0 --files-from=- ./ "$src/"
 cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTVIEW_BUILD_VIEWER=ON \
     >"$scratch/configure.log" 2>&1 || { cat "$scratch/configure.log"; exit 1; }
 
@@ -123,6 +126,24 @@ mutant checker-parity-wrong core/material.h \
     'return sum == 0.0f || sum == 2.0f ? colour_a : colour_b;' \
     'return sum == 0.0f ? colour_a : colour_b;' \
     rt_tests $(unit 'Checker.*')
+
+mutant stale-mesh-hit-kept core/scene.cpp \
+    'if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};' 'if (t) hit.t = *t;' \
+    rt_tests $(unit 'Scene.*')
+mutant light-on-surface-nan core/tracer.cpp \
+    'if (!(distance > 0.0f) || !std::isfinite(distance)) continue;' '' \
+    rt_tests $(unit 'Phong.*')
+mutant near-light-behind-offset-dark core/tracer.cpp \
+    'return glm::dot(from_surface, sp.geometric_normal) > 0.0f;' 'return false;' \
+    rt_tests $(unit 'Far.*')
+mutant egl-display-terminated-early app/gl/context_egl.cpp \
+    'display_refs().release(display_);' 'eglTerminate(display_);' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='GlContexts.*'
+mutant item-buffer-tutorial-triangle core/scene.cpp \
+    'if (h.lane != 0) return false;
+    hit = Hit{h.t, object, prim, h.b1, h.b2};' 'if (h.lane != 0) return false;
+    hit = Hit{h.t * (1.0f + 1e-6f), object, prim, h.b1, h.b2};' \
+    rt_tests $(unit 'Triangle.*')
 
 echo "$caught caught, $missed missed, $broken could not be planted"
 [ "$missed" -gt 0 ] && echo "missed: ${missed_names[*]}"

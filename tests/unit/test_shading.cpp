@@ -279,9 +279,13 @@ TEST(Phong, LightOnTheSurfaceGivesAmbientNotNaN) {
     scene.lights.push_back(Light{Light::Type::kPoint, {0, 0, 0}, {}, vec3(1.0f)});
     scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
     scene.build();
-    RayCounts counts;
-    const vec3 c = Tracer(scene, {}).trace_primary(Ray{{0, 1, 0}, {0, -1, 0}}, counts);
-    expect_colour(c, vec3(0.25f));
+    for (bool shadows : {true, false}) {  // with feelers, and with no feeler to stop it
+        TraceOptions options;
+        options.shadows = shadows;
+        RayCounts counts;
+        const vec3 c = Tracer(scene, options).trace_primary(Ray{{0, 1, 0}, {0, -1, 0}}, counts);
+        expect_colour(c, vec3(0.25f));
+    }
 }
 
 }  // namespace
