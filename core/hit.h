@@ -21,13 +21,13 @@ struct Hit {
     bool found() const { return object != kNoObject; }
 };
 
-// The surface at a hit, in world space. Normals face the incoming ray; front_face tells
-// whether the ray met the outward side (refraction needs to know if it enters or leaves).
+// The surface at a hit, in world space. Both normals face the incoming ray, whichever
+// way the surface is wound (refraction asks the ray's media, not the winding, whether it
+// enters or leaves: core/medium.h).
 struct SurfacePoint {
     vec3 p{0.0f};
     vec3 geometric_normal{0.0f, 1.0f, 0.0f};
     vec3 normal{0.0f, 1.0f, 0.0f};  // shading normal
-    bool front_face = true;
     std::uint32_t material = 0;
     vec3 pattern_point{0.0f};  // where a checker is evaluated (object space)
 };

@@ -181,10 +181,10 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
         ns = glm::normalize(ns);
     }
     sp.p = p;
-    sp.front_face = glm::dot(r.dir, ng) < 0.0f;
-    sp.geometric_normal = sp.front_face ? ng : -ng;
+    const bool front_face = glm::dot(r.dir, ng) < 0.0f;
+    sp.geometric_normal = front_face ? ng : -ng;
     // An interpolated normal may lean past the silhouette; keep it on the viewer's side.
-    ns = sp.front_face ? ns : -ns;
+    ns = front_face ? ns : -ns;
     sp.normal = glm::dot(ns, sp.geometric_normal) > 0.0f ? ns : sp.geometric_normal;
     return sp;
 }

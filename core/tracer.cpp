@@ -19,31 +19,33 @@ Refraction refract_dir(const vec3& d, const vec3& n, float eta_from, float eta_t
 
 vec3 Tracer::trace_primary(const Ray& r, RayCounts& counts) const {
     ++counts.primary;
-    Hit hit;
-    if (!scene_.intersect(r, hit)) return scene_.background;
-    return shade(r, hit, 0, 1.0f, counts);
+    return trace(r, Path{}, counts);
 }
 
 vec3 Tracer::shade_hit(const Ray& r, const Hit& hit, RayCounts& counts) const {
-    return hit.found() ? shade(r, hit, 0, 1.0f, counts) : scene_.background;
+    return hit.found() ? shade(r, hit, Path{}, counts) : scene_.background;
 }
 
-vec3 Tracer::trace(const Ray& r, int depth, float weight, RayCounts& counts) const {
+vec3 Tracer::trace(const Ray& r, const Path& path, RayCounts& counts) const {
     Hit hit;
     if (!scene_.intersect(r, hit)) return scene_.background;
-    return shade(r, hit, depth, weight, counts);
+    return shade(r, hit, path, counts);
 }
 
-vec3 Tracer::shade(const Ray& r, const Hit& hit, int depth, float weight, RayCounts& counts) const {
+vec3 Tracer::shade(const Ray& r, const Hit& hit, const Path& path, RayCounts& counts) const {
     const SurfacePoint sp = scene_.surface(r, hit);
     const Material& m = scene_.materials[sp.material];
     vec3 colour = phong(r, sp, counts);
-    if (depth >= options_.max_depth) return colour;
+    if (path.depth >= options_.max_depth) return colour;
     // R_n = R_amb + R_diff + R_spec + reflectivity R_(n-1), and the same for transmission.
-    if (options_.reflections && m.reflectivity * weight >= options_.min_weight)
-        colour += m.reflectivity * reflected(r, sp, depth, weight * m.reflectivity, counts);
-    if (options_.refractions && m.transparency * weight >= options_.min_weight)
-        colour += m.transparency * refracted(r, sp, depth, weight * m.transparency, counts);
+    if (options_.reflections && m.reflectivity * path.weight >= options_.min_weight) {
+        const Path next{path.depth + 1, path.weight * m.reflectivity, path.media};
+        colour += m.reflectivity * reflected(r, sp, next, counts);
+    }
+    if (options_.refractions && m.transparency * path.weight >= options_.min_weight) {
+        const Path next{path.depth + 1, path.weight * m.transparency, path.media};
+        colour += m.transparency * refracted(r, hit, sp, next, counts);
+    }
     return colour;
 }
 
@@ -89,27 +91,30 @@ bool Tracer::visible(const vec3& p, const SurfacePoint& sp, const Light& light,
     return !scene_.occluded(Ray{p, dir}, t_max);
 }
 
-vec3 Tracer::reflected(const Ray& r, const SurfacePoint& sp, int depth, float weight,
+// `path` is the new ray's: one deeper, its weight, and (a reflection stays on its side
+// of the surface) the media of the ray that arrived.
+vec3 Tracer::reflected(const Ray& r, const SurfacePoint& sp, const Path& path,
                        RayCounts& counts) const {
     ++counts.reflected;
     const vec3 d = reflect_dir(glm::normalize(r.dir), sp.normal);
-    return trace(Ray{offset_ray_origin(sp.p, sp.geometric_normal), d}, depth + 1, weight, counts);
+    return trace(Ray{offset_ray_origin(sp.p, sp.geometric_normal), d}, path, counts);
 }
 
-vec3 Tracer::refracted(const Ray& r, const SurfacePoint& sp, int depth, float weight,
+vec3 Tracer::refracted(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,
                        RayCounts& counts) const {
-    const Material& m = scene_.materials[sp.material];
-    // Entering through the outward side goes from air into the material, else back out.
-    const float eta_from = sp.front_face ? 1.0f : m.ior;
-    const float eta_to = sp.front_face ? m.ior : 1.0f;
-    const Refraction t = refract_dir(glm::normalize(r.dir), sp.normal, eta_from, eta_to);
+    // Entering or leaving follows from the media the ray is inside, not from the winding:
+    // the normal already faces the ray, whichever way the surface was wound.
+    const MediumStack::Crossing crossing =
+        path.media.cross(hit.object, scene_.materials[sp.material].ior);
+    const Refraction t =
+        refract_dir(glm::normalize(r.dir), sp.normal, crossing.eta_from, crossing.eta_to);
     if (t.total_internal_reflection) {
         // No light crosses: what would have been transmitted is reflected instead.
-        return reflected(r, sp, depth, weight, counts);
+        return reflected(r, sp, path, counts);
     }
     ++counts.refracted;
-    return trace(Ray{offset_ray_origin(sp.p, -sp.geometric_normal), t.dir}, depth + 1, weight,
-                 counts);
+    const Path through{path.depth, path.weight, crossing.after};
+    return trace(Ray{offset_ray_origin(sp.p, -sp.geometric_normal), t.dir}, through, counts);
 }
 
 }  // namespace rt

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "core/medium.h"
 #include "core/scene.h"
 
 namespace rt {
@@ -57,11 +58,17 @@ class Tracer {
     vec3 phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) const;
 
   private:
-    vec3 trace(const Ray& r, int depth, float weight, RayCounts& counts) const;
-    vec3 shade(const Ray& r, const Hit& hit, int depth, float weight, RayCounts& counts) const;
-    vec3 reflected(const Ray& r, const SurfacePoint& sp, int depth, float weight,
-                   RayCounts& counts) const;
-    vec3 refracted(const Ray& r, const SurfacePoint& sp, int depth, float weight,
+    // Where a secondary ray stands: its depth, its weight in the pixel, and the media it
+    // is inside.
+    struct Path {
+        int depth = 0;
+        float weight = 1.0f;
+        MediumStack media;
+    };
+    vec3 trace(const Ray& r, const Path& path, RayCounts& counts) const;
+    vec3 shade(const Ray& r, const Hit& hit, const Path& path, RayCounts& counts) const;
+    vec3 reflected(const Ray& r, const SurfacePoint& sp, const Path& path, RayCounts& counts) const;
+    vec3 refracted(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,
                    RayCounts& counts) const;
     bool visible(const vec3& p, const SurfacePoint& sp, const Light& light,
                  RayCounts& counts) const;

@@ -68,13 +68,11 @@ mutant transform-normal core/transform.cpp \
     't.normal = glm::transpose(glm::inverse(linear));' 't.normal = glm::inverse(linear);' \
     rt_tests $(unit 'Transform.*')
 mutant refraction-indices-swapped core/tracer.cpp \
-    'refract_dir(glm::normalize(r.dir), sp.normal, eta_from, eta_to)' \
-    'refract_dir(glm::normalize(r.dir), sp.normal, eta_to, eta_from)' \
-    rt_tests $(unit 'Refraction.*:Refract.*')
+    'sp.normal, crossing.eta_from, crossing.eta_to)' 'sp.normal, crossing.eta_to, crossing.eta_from)' \
+    rt_tests $(unit 'Refraction*:Refract.*')
 mutant tir-black core/tracer.cpp \
-    'return reflected(r, sp, depth, weight, counts);
-    }' 'return vec3(0.0f);
-    }' rt_tests $(unit 'Refraction.*')
+    'return reflected(r, sp, path, counts);' 'return vec3(0.0f);' \
+    rt_tests $(unit 'Refraction*')
 mutant compare-counts-nothing core/compare.cpp \
     'd.pixels_over += largest > threshold;' 'd.pixels_over += 0;' \
     rt_tests $(unit 'Compare.*')
@@ -144,6 +142,31 @@ mutant item-buffer-tutorial-triangle core/scene.cpp \
     hit = Hit{h.t, object, prim, h.b1, h.b2};' 'if (h.lane != 0) return false;
     hit = Hit{h.t * (1.0f + 1e-6f), object, prim, h.b1, h.b2};' \
     rt_tests $(unit 'Triangle.*')
+
+mutant glass-nesting-ignored core/medium.h \
+    'Crossing c{ior(), 1.0f, *this};' 'Crossing c{1.0f, 1.0f, *this};' \
+    rt_tests $(unit 'Refraction*:MediumStack.*')
+
+# The POV-Ray oracle (tests/oracle) alone, without the unit tests: an independent tracer
+# must notice a planted bug in refraction, shadows, the camera and transforms.
+oracle=(ctest -R '^oracle[.]' --output-on-failure)
+cmake --build "$build" --target rtgolden >"$scratch/rtgolden.build.log" 2>&1
+mutant oracle-refraction-indices-swapped core/tracer.cpp \
+    'sp.normal, crossing.eta_from, crossing.eta_to)' 'sp.normal, crossing.eta_to, crossing.eta_from)' \
+    rtrender "${oracle[@]}"
+mutant oracle-glass-nesting-ignored core/medium.h \
+    'Crossing c{ior(), 1.0f, *this};' 'Crossing c{1.0f, 1.0f, *this};' rtrender "${oracle[@]}"
+mutant oracle-shadow-feeler-dropped core/tracer.cpp \
+    'return !scene_.occluded(Ray{p, dir}, t_max);' 'return true;' rtrender "${oracle[@]}"
+mutant oracle-camera-fov-2-percent-wide core/camera.cpp \
+    'std::tan(glm::radians(vfov_degrees) * 0.5f)' 'std::tan(glm::radians(vfov_degrees) * 0.51f)' \
+    rtrender "${oracle[@]}"
+mutant oracle-rotation-before-scale core/scene_loader.cpp \
+    'm = glm::rotate(glm::dmat4(1.0), glm::radians(deg[axis]), unit) * m;' \
+    'm = m * glm::rotate(glm::dmat4(1.0), glm::radians(deg[axis]), unit);' rtrender "${oracle[@]}"
+mutant oracle-transform-normal core/transform.cpp \
+    't.normal = glm::transpose(glm::inverse(linear));' 't.normal = glm::inverse(linear);' \
+    rtrender "${oracle[@]}"
 
 echo "$caught caught, $missed missed, $broken could not be planted"
 [ "$missed" -gt 0 ] && echo "missed: ${missed_names[*]}"

@@ -18,6 +18,7 @@ packages=(
   xvfb xdotool imagemagick            # the viewer's tests: X server, input, screen grabs
   libembree-dev gnuplot-nox           # rtbench: the reference BVH, and its plots
   clang libclang-rt-14-dev            # libFuzzer targets (scripts/fuzz.sh)
+  povray                              # the oracle test: an independent tracer
 )
 
 missing=()

@@ -38,6 +38,9 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
         ->check(CLI::Range(1, 1024));
     app.add_option("--max-depth", o.trace.max_depth, "Maximum reflection/refraction depth")
         ->check(CLI::Range(0, 64));
+    app.add_option("--min-weight", o.trace.min_weight,
+                   "Cast no reflected or refracted ray that adds less than this to the pixel")
+        ->check(CLI::Range(0.0f, 1.0f));
     app.add_flag("--no-shadows", no_shadows, "Trace no shadow feelers");
     app.add_flag("--no-reflections", no_reflections, "Trace no reflected rays");
     app.add_flag("--no-refractions", no_refractions, "Trace no refracted rays");
