@@ -2,18 +2,10 @@
 #include <OpenImageIO/imageio.h>
 
 #include "core/error.h"
+#include "core/file_kind.h"
 #include "core/image.h"
 
 namespace rt {
-namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
-}  // namespace
 
 bool is_supported_output(const std::filesystem::path& path) {
     const std::string ext = lower_extension(path);

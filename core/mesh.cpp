@@ -29,8 +29,8 @@ void TriangleMesh::build(AccelKind kind) {
     accel_.for_each_leaf([&](std::uint32_t first, std::uint32_t count) {
         leaf_pack_[first] = static_cast<std::uint32_t>(packs_.size());
         for (std::uint32_t i = 0; i < count; ++i) {
-            if (i % 4 == 0) packs_.emplace_back();  // zeroed: the spare lanes never hit
-            set(packs_.back(), static_cast<int>(i % 4), first + i);
+            if (i % kTriangle4Lanes == 0) packs_.emplace_back();  // zeroed: the spare lanes never hit
+            set(packs_.back(), static_cast<int>(i % kTriangle4Lanes), first + i);
         }
     });
 }
@@ -63,11 +63,11 @@ bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
         r, hit.t, [&](std::uint32_t first, std::uint32_t count, float& t_max) {
             bool found = false;
             const std::uint32_t start = leaf_pack_[first];
-            for (std::uint32_t k = 0; 4 * k < count; ++k) {
+            for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
                 const Triangle4Hit h = rt::intersect(packs_[start + k], sheared, t_max);
                 if (h.lane < 0) continue;
                 t_max = h.t;
-                hit.prim = order[first + 4 * k + static_cast<std::uint32_t>(h.lane)];
+                hit.prim = order[first + kTriangle4Lanes * k + static_cast<std::uint32_t>(h.lane)];
                 hit.b1 = h.b1;
                 hit.b2 = h.b2;
                 found = true;
@@ -81,7 +81,7 @@ bool TriangleMesh::occluded(const Ray& r, float t_max) const {
     return accel_.traverse_leaves<true>(
         r, t_max, [&](std::uint32_t first, std::uint32_t count, float& t_limit) {
             const std::uint32_t start = leaf_pack_[first];
-            for (std::uint32_t k = 0; 4 * k < count; ++k)
+            for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k)
                 if (rt::intersect(packs_[start + k], sheared, t_limit).lane >= 0) return true;
             return false;
         });

@@ -51,6 +51,26 @@ struct TriangleMesh {
     std::vector<std::uint32_t> leaf_pack_;
 };
 
+// A mesh as one object of a scene sees it: the shape interface of core/shapes.h over a
+// shared TriangleMesh (Scene::visit_shape makes one from an object's MeshRef).
+struct MeshInstance {
+    const TriangleMesh& mesh;
+    bool own_materials = true;  // the mesh's per-triangle materials, else the object's
+
+    const Aabb& bounds() const { return mesh.bounds(); }
+    bool intersect(const Ray& r, Hit& hit) const { return mesh.intersect(r, hit); }
+    bool occluded(const Ray& r, float t_max) const { return mesh.occluded(r, t_max); }
+    LocalSurface surface(const Ray&, const Hit& hit) const {
+        LocalSurface s{mesh.point(hit), mesh.face_normal(hit.prim), mesh.shading_normal(hit),
+                       std::nullopt};
+        if (own_materials && !mesh.materials.empty()) s.material = mesh.materials[hit.prim];
+        return s;
+    }
+    template <class V>
+    V pattern_point(const V& p) const { return p; }
+    std::size_t triangle_count() const { return mesh.triangles.size(); }
+};
+
 // The box around the triangles, segments and points (unused vertices left out).
 Aabb bounds_of(const TriangleMesh& mesh);
 

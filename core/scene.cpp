@@ -7,40 +7,6 @@
 namespace rt {
 namespace {
 
-template <class... F>
-struct Overloaded : F... {
-    using F::operator()...;
-};
-template <class... F>
-Overloaded(F...) -> Overloaded<F...>;  // clang 14 does not deduce aggregates by itself
-
-// Object-space hit test of one shape; updates hit.t (and prim, b1, b2) on a closer hit.
-bool intersect_shape(const Scene& scene, const Shape& shape, const Ray& r, Hit& hit) {
-    return std::visit(
-        Overloaded{[&](const MeshRef& m) { return scene.meshes[m.mesh].intersect(r, hit); },
-                   [&](const Triangle& tri) {
-                       const auto h = intersect(tri, r, hit.t);
-                       if (h) hit = Hit{h->t, hit.object, 0, h->b1, h->b2};
-                       return h.has_value();
-                   },
-                   [&](const auto& analytic) {
-                       // A sphere or plane has no triangle: the whole record is replaced,
-                       // so no earlier mesh hit's triangle and barycentrics stay behind.
-                       const auto t = intersect(analytic, r, hit.t);
-                       if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};
-                       return t.has_value();
-                   }},
-        shape);
-}
-
-bool occluded_shape(const Scene& scene, const Shape& shape, const Ray& r, float t_max) {
-    if (const auto* m = std::get_if<MeshRef>(&shape))
-        return scene.meshes[m->mesh].occluded(r, t_max);
-    Hit probe;
-    probe.t = t_max;
-    return intersect_shape(scene, shape, r, probe);
-}
-
 Ray object_ray(const Object& o, const Ray& r) {
     return o.transform ? o.transform->to_object(r) : r;
 }
@@ -48,20 +14,7 @@ Ray object_ray(const Object& o, const Ray& r) {
 }  // namespace
 
 Aabb Scene::object_bounds(const Object& o) const {
-    Aabb box =
-        std::visit(Overloaded{[&](const Sphere& s) {
-                                  return Aabb{s.centre - vec3(s.radius), s.centre + vec3(s.radius)};
-                              },
-                              [&](const Triangle& t) {
-                                  Aabb b;
-                                  b.grow(t.a);
-                                  b.grow(t.b);
-                                  b.grow(t.c);
-                                  return b;
-                              },
-                              [&](const MeshRef& m) { return meshes[m.mesh].bounds(); },
-                              [&](const Plane&) { return Aabb{}; }},
-                   o.shape);
+    const Aabb box = visit_shape(o, [](const auto& shape) { return Aabb(shape.bounds()); });
     return o.transform ? box.transformed(o.transform->m) : box;
 }
 
@@ -89,7 +42,9 @@ void Scene::build(AccelKind kind) {
 
 bool Scene::intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const {
     const Object& o = objects[object];
-    if (!intersect_shape(*this, o.shape, object_ray(o, r), hit)) return false;
+    const Ray local = object_ray(o, r);
+    if (!visit_shape(o, [&](const auto& shape) { return shape.intersect(local, hit); }))
+        return false;
     hit.object = object;
     return true;
 }
@@ -124,11 +79,14 @@ bool Scene::intersect(const Ray& r, Hit& hit) const {
 }
 
 bool Scene::occluded(const Ray& r, float t_max) const {
+    const auto occluded_by = [&](const Object& o, float t_limit) {
+        const Ray local = object_ray(o, r);
+        return visit_shape(o, [&](const auto& shape) { return shape.occluded(local, t_limit); });
+    };
     for (std::uint32_t i : unbounded_)
-        if (occluded_shape(*this, objects[i].shape, object_ray(objects[i], r), t_max)) return true;
+        if (occluded_by(objects[i], t_max)) return true;
     return top_.traverse<true>(r, t_max, [&](std::uint32_t slot, float& t_limit) {
-        const Object& o = objects[bounded_[slot]];
-        return occluded_shape(*this, o.shape, object_ray(o, r), t_limit);
+        return occluded_by(objects[bounded_[slot]], t_limit);
     });
 }
 
@@ -136,42 +94,15 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
     const Object& o = objects[hit.object];
     const Ray local = object_ray(o, r);
     SurfacePoint sp;
-    sp.material = o.material;
-    vec3 p = local.at(hit.t);
-    vec3 ng, ns;
-    std::visit(Overloaded{[&](const Sphere& s) {
-                              // Project back onto the sphere: the point is then as exact as
-                              // floats allow, which the ray offset relies on.
-                              ng = glm::normalize(p - s.centre);
-                              p = s.centre + s.radius * ng;
-                              ns = ng;
-                          },
-                          [&](const Plane& pl) {
-                              p -= (glm::dot(p, pl.normal) - pl.offset) * pl.normal;
-                              ng = ns = pl.normal;
-                          },
-                          [&](const Triangle& tri) {
-                              p = (1.0f - hit.b1 - hit.b2) * tri.a + hit.b1 * tri.b +
-                                  hit.b2 * tri.c;
-                              ng = ns = glm::cross(tri.b - tri.a, tri.c - tri.a);
-                          },
-                          [&](const MeshRef& m) {
-                              const TriangleMesh& mesh = meshes[m.mesh];
-                              p = mesh.point(hit);
-                              ng = mesh.face_normal(hit.prim);
-                              ns = mesh.shading_normal(hit);
-                              if (m.own_materials && !mesh.materials.empty())
-                                  sp.material = mesh.materials[hit.prim];
-                          }},
-               o.shape);
-
-    sp.pattern_point = p;
-    if (const auto* pl = std::get_if<Plane>(&o.shape)) {
-        vec3 t1, t2;  // a plane's checker lies in the plane, not across it
-        tangent_frame(pl->normal, t1, t2);
-        sp.pattern_point = {glm::dot(p, t1), glm::dot(p, t2), 0.0f};
-    }
+    const LocalSurface ls = visit_shape(o, [&](const auto& shape) {
+        const LocalSurface s = shape.surface(local, hit);
+        // A checker lies in the shape's own frame (a plane's), before the transform.
+        sp.pattern_point = shape.pattern_point(s.p);
+        return s;
+    });
+    sp.material = ls.material.value_or(o.material);
     sp.pattern_point += pattern_shift(hit.object, sp.material);
+    vec3 p = ls.p, ng = ls.geometric_normal, ns = ls.normal;
     if (o.transform) {
         p = o.transform->point_to_world(p);
         ng = o.transform->normal_to_world(ng);
@@ -193,12 +124,7 @@ vec3 Scene::pattern_shift(std::uint32_t object, std::uint32_t material) const {
     const Object& o = objects[object];
     const Material& m = materials[material];
     if (o.transform || !m.checker || origin == glm::dvec3(0.0)) return vec3(0.0f);
-    if (const auto* pl = std::get_if<Plane>(&o.shape)) {
-        vec3 t1, t2;
-        tangent_frame(pl->normal, t1, t2);
-        return m.checker->shift({glm::dot(origin, glm::dvec3(t1)), glm::dot(origin, glm::dvec3(t2)), 0.0});
-    }
-    return m.checker->shift(origin);
+    return m.checker->shift(visit_shape(o, [&](const auto& shape) { return shape.pattern_point(origin); }));
 }
 
 Aabb Scene::bounds() const {
@@ -209,10 +135,8 @@ Aabb Scene::bounds() const {
 
 std::size_t Scene::triangle_count() const {
     std::size_t n = 0;
-    for (const Object& o : objects) {
-        if (std::holds_alternative<Triangle>(o.shape)) ++n;
-        if (const auto* m = std::get_if<MeshRef>(&o.shape)) n += meshes[m->mesh].triangles.size();
-    }
+    for (const Object& o : objects)
+        n += visit_shape(o, [](const auto& shape) { return shape.triangle_count(); });
     return n;
 }
 

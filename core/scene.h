@@ -71,12 +71,33 @@ class Scene {
     std::size_t triangle_count() const;
     std::size_t accel_memory_bytes() const;
 
-  private:
+    // Calls f with the object's shape, a mesh reference resolved to its MeshInstance, so
+    // that f sees the one interface every shape has (core/shapes.h).
+    template <class F>
+    decltype(auto) visit_shape(const Object& o, F&& f) const;
+    // The object's box in the scene (empty for planes).
     Aabb object_bounds(const Object& o) const;
 
+  private:
     Accel top_;                             // over the bounded objects
     std::vector<std::uint32_t> bounded_;    // traversal slot -> object
     std::vector<std::uint32_t> unbounded_;  // planes: tested for every ray
 };
+
+template <class... F>
+struct Overloaded : F... {
+    using F::operator()...;
+};
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;  // clang 14 does not deduce aggregates by itself
+
+template <class F>
+decltype(auto) Scene::visit_shape(const Object& o, F&& f) const {
+    return std::visit(Overloaded{[&](const MeshRef& m) {
+                                     return f(MeshInstance{meshes[m.mesh], m.own_materials});
+                                 },
+                                 [&](const auto& shape) { return f(shape); }},
+                      o.shape);
+}
 
 }  // namespace rt

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "core/file_kind.h"
 #include "core/json_reader.h"
 #include "core/obj_loader.h"
 
@@ -21,11 +22,6 @@ constexpr double kFarFromOrigin = 4096.0;
 
 bool far_from_origin(const glm::dvec3& p) {
     return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kFarFromOrigin;
-}
-
-std::string lower(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
 }
 
 // Walks one JSON scene into a Scene, keeping the names and caches that loading needs.
@@ -417,7 +413,7 @@ LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions&
 }
 
 LoadedScene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
-    const std::string ext = lower(path.extension().string());
+    const std::string ext = lower_extension(path);
     if (ext == ".obj") return load_obj_scene(path, options);
     if (ext == ".json") return load_json_scene(path);
     throw Error(path.string(), "open",

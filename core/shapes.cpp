@@ -66,6 +66,66 @@ std::optional<TriangleHit> intersect_triangle(const vec3& a, const vec3& b, cons
     return TriangleHit{t, edge_ca * inv_nn, edge_ab * inv_nn};
 }
 
+// --- each shape's part of the scene's questions --------------------------------------
+// A sphere or plane has no triangle: the whole record is replaced, so no earlier mesh
+// hit's triangle and barycentrics stay behind.
+
+bool Sphere::intersect(const Ray& r, Hit& hit) const {
+    const auto t = rt::intersect(*this, r, hit.t);
+    if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};
+    return t.has_value();
+}
+
+bool Sphere::occluded(const Ray& r, float t_max) const {
+    return rt::intersect(*this, r, t_max).has_value();
+}
+
+LocalSurface Sphere::surface(const Ray& r, const Hit& hit) const {
+    // Projected back onto the sphere: the point is then as exact as floats allow, which
+    // the ray offset relies on.
+    const vec3 n = glm::normalize(r.at(hit.t) - centre);
+    return LocalSurface{centre + radius * n, n, n, std::nullopt};
+}
+
+bool Plane::intersect(const Ray& r, Hit& hit) const {
+    const auto t = rt::intersect(*this, r, hit.t);
+    if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};
+    return t.has_value();
+}
+
+bool Plane::occluded(const Ray& r, float t_max) const {
+    return rt::intersect(*this, r, t_max).has_value();
+}
+
+LocalSurface Plane::surface(const Ray& r, const Hit& hit) const {
+    vec3 p = r.at(hit.t);
+    p -= (glm::dot(p, normal) - offset) * normal;  // back onto the plane
+    return LocalSurface{p, normal, normal, std::nullopt};
+}
+
+Aabb Triangle::bounds() const {
+    Aabb box;
+    box.grow(a);
+    box.grow(b);
+    box.grow(c);
+    return box;
+}
+
+bool Triangle::intersect(const Ray& r, Hit& hit) const {
+    const auto h = rt::intersect(*this, r, hit.t);
+    if (h) hit = Hit{h->t, hit.object, 0, h->b1, h->b2};
+    return h.has_value();
+}
+
+bool Triangle::occluded(const Ray& r, float t_max) const {
+    return rt::intersect(*this, r, t_max).has_value();
+}
+
+LocalSurface Triangle::surface(const Ray&, const Hit& hit) const {
+    const vec3 n = glm::cross(b - a, c - a);
+    return LocalSurface{(1.0f - hit.b1 - hit.b2) * a + hit.b1 * b + hit.b2 * c, n, n, std::nullopt};
+}
+
 void tangent_frame(const vec3& n, vec3& t1, vec3& t2) {
     // Duff et al. build the frame around z; with y and z swapped it is built around y.
     const vec3 m{n.x, n.z, n.y};

@@ -1,26 +1,83 @@
 #pragma once
-// The tutorial's analytic shapes and their ray intersections, in object space.
-// Each intersect() returns the smallest t in (0, t_max), or nothing.
+// The tutorial's analytic shapes, each with everything the scene asks of a shape, in
+// one place and in the shape's own (object) space:
+//   bounds()        its box (empty for the unbounded plane, which every ray tests);
+//   intersect(r, h) the closest hit in (0, h.t): replaces h's record but h.object;
+//   occluded(r, t)  any hit in (0, t): the shadow feeler's question;
+//   surface(r, h)   the point and normals of a hit (LocalSurface);
+//   pattern_point() where a checker is evaluated for a point of the surface;
+//   triangle_count()
+// A mesh instance (core/mesh.h, MeshInstance) offers the same. The free intersect()
+// functions below are the tutorial's formulas, each returning the smallest t in
+// (0, t_max), or nothing. Adding a shape: docs/architecture.md.
 
+#include <cstdint>
 #include <optional>
 
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/aabb.h"
+#include "core/hit.h"
 #include "core/ray.h"
 
 namespace rt {
 
+// An orthonormal tangent pair for a unit normal (Duff et al., JCGT 2017); for the
+// y-up plane it gives +x and +z, so checker squares line up with the axes.
+void tangent_frame(const vec3& n, vec3& t1, vec3& t2);
+
+// A hit's surface in the shape's own space, before the object's transform. Normals
+// need not be unit length nor face the ray; Scene::surface does both.
+struct LocalSurface {
+    vec3 p{0.0f};
+    vec3 geometric_normal{0.0f, 1.0f, 0.0f};
+    vec3 normal{0.0f, 1.0f, 0.0f};
+    std::optional<std::uint32_t> material;  // a mesh's own material for the hit triangle
+};
+
 struct Sphere {
     vec3 centre{0.0f};
     float radius = 1.0f;
+
+    Aabb bounds() const { return Aabb{centre - vec3(radius), centre + vec3(radius)}; }
+    bool intersect(const Ray& r, Hit& hit) const;
+    bool occluded(const Ray& r, float t_max) const;
+    LocalSurface surface(const Ray& r, const Hit& hit) const;
+    template <class V>
+    V pattern_point(const V& p) const { return p; }
+    std::size_t triangle_count() const { return 0; }
 };
 
 // The plane p . normal - offset = 0 (the tutorial's p . n - a = 0); normal is unit length.
 struct Plane {
     vec3 normal{0.0f, 1.0f, 0.0f};
     float offset = 0.0f;
+
+    Aabb bounds() const { return Aabb{}; }  // unbounded
+    bool intersect(const Ray& r, Hit& hit) const;
+    bool occluded(const Ray& r, float t_max) const;
+    LocalSurface surface(const Ray& r, const Hit& hit) const;
+    // A plane's checker lies in the plane, not across it: the point in the plane's frame.
+    template <class V>
+    V pattern_point(const V& p) const {
+        vec3 t1, t2;
+        tangent_frame(normal, t1, t2);
+        return V(glm::dot(p, V(t1)), glm::dot(p, V(t2)), 0);
+    }
+    std::size_t triangle_count() const { return 0; }
 };
 
 struct Triangle {
     vec3 a, b, c;
+
+    Aabb bounds() const;
+    bool intersect(const Ray& r, Hit& hit) const;
+    bool occluded(const Ray& r, float t_max) const;
+    LocalSurface surface(const Ray& r, const Hit& hit) const;
+    template <class V>
+    V pattern_point(const V& p) const { return p; }
+    std::size_t triangle_count() const { return 1; }
 };
 
 // The three cases of the sphere's discriminant B^2 - 4AC.
@@ -55,9 +112,5 @@ std::optional<TriangleHit> intersect_triangle(const vec3& a, const vec3& b, cons
 inline std::optional<TriangleHit> intersect(const Triangle& tri, const Ray& r, float t_max) {
     return intersect_triangle(tri.a, tri.b, tri.c, r, t_max);
 }
-
-// An orthonormal tangent pair for a unit normal (Duff et al., JCGT 2017); for the
-// y-up plane it gives +x and +z, so checker squares line up with the axes.
-void tangent_frame(const vec3& n, vec3& t1, vec3& t2);
 
 }  // namespace rt

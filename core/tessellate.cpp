@@ -63,4 +63,35 @@ TriangleMesh plane_quad(const Plane& plane, const vec3& around, float extent) {
     return mesh;
 }
 
+namespace {
+
+TriangleMesh triangles_of(const Sphere& s, int segments) {
+    TriangleMesh mesh = tessellate_unit_sphere(segments);
+    for (vec3& p : mesh.positions) p = s.centre + s.radius * p;  // normals stay as they are
+    return mesh;
+}
+TriangleMesh triangles_of(const Triangle& t, int) {
+    TriangleMesh mesh;
+    mesh.positions = {t.a, t.b, t.c};
+    mesh.triangles = {{0, 1, 2}};
+    return mesh;
+}
+TriangleMesh triangles_of(const MeshInstance& m, int) {
+    TriangleMesh mesh;
+    mesh.name = m.mesh.name;
+    mesh.positions = m.mesh.positions;
+    mesh.triangles = m.mesh.triangles;
+    mesh.corner_normals = m.mesh.corner_normals;
+    if (m.own_materials) mesh.materials = m.mesh.materials;
+    return mesh;
+}
+TriangleMesh triangles_of(const Plane&, int) { return {}; }
+
+}  // namespace
+
+TriangleMesh object_triangles(const Scene& scene, const Object& object, int sphere_segments) {
+    return scene.visit_shape(object,
+                             [&](const auto& shape) { return triangles_of(shape, sphere_segments); });
+}
+
 }  // namespace rt

@@ -4,6 +4,7 @@
 
 #include "core/camera.h"
 #include "core/mesh.h"
+#include "core/scene.h"
 #include "core/shapes.h"
 
 namespace rt {
@@ -18,6 +19,13 @@ int sphere_segments_for(float radius_pixels);
 
 // The on-screen radius, in pixels, of a sphere of `radius` at `centre` (world space).
 float projected_radius_pixels(const Camera& camera, const vec3& centre, float radius);
+
+// An object's shape as triangles in its own (object) space: a sphere as a latitude/
+// longitude mesh of `sphere_segments`, a triangle as itself, a mesh as its triangles
+// (with its per-triangle materials); a plane has none (unbounded: the raster view draws
+// plane_quad under the eye). What rtbench's flattened scene and the raster view's
+// single triangles are made of.
+TriangleMesh object_triangles(const Scene& scene, const Object& object, int sphere_segments);
 
 // A square of the plane, half-size `extent`, centred on the point of the plane nearest
 // to `around`, as two triangles in the plane's own (object) space.

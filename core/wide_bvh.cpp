@@ -6,8 +6,6 @@
 namespace rt {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
-
 template <int N>
 void set_lane(WideBvhNode<N>& node, int lane, const Aabb& box) {
     for (int a = 0; a < 3; ++a) {
@@ -21,8 +19,8 @@ WideBvhNode<N> empty_node() {
     using Float = typename Lanes<N>::Float;
     WideBvhNode<N> node{};
     for (int a = 0; a < 3; ++a) {
-        node.bounds[a] = splat<Float>(kInf);
-        node.bounds[a + 3] = splat<Float>(-kInf);
+        node.bounds[a] = splat<Float>(kInfinity);
+        node.bounds[a + 3] = splat<Float>(-kInfinity);
     }
     return node;
 }

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <numbers>
 #include <thread>
 
 #include <glm/geometric.hpp>
@@ -13,25 +14,12 @@ namespace rtbench {
 
 rt::TriangleMesh flatten(const rt::Scene& scene) {
     rt::TriangleMesh out;
-    const auto add = [&](const rt::TriangleMesh& mesh, const glm::mat4& m) {
+    for (const rt::Object& o : scene.objects) {
+        const rt::TriangleMesh mesh = rt::object_triangles(scene, o, 96);
+        const glm::mat4 m = o.transform ? o.transform->m : glm::mat4(1.0f);
         const auto base = static_cast<std::uint32_t>(out.positions.size());
         for (const vec3& p : mesh.positions) out.positions.push_back(vec3(m * glm::vec4(p, 1.0f)));
         for (const glm::uvec3& t : mesh.triangles) out.triangles.push_back(t + glm::uvec3(base));
-    };
-    const rt::TriangleMesh sphere = rt::tessellate_unit_sphere(96);
-    for (const rt::Object& o : scene.objects) {
-        const glm::mat4 m = o.transform ? o.transform->m : glm::mat4(1.0f);
-        if (const auto* mesh = std::get_if<rt::MeshRef>(&o.shape)) {
-            add(scene.meshes[mesh->mesh], m);
-        } else if (const auto* s = std::get_if<rt::Sphere>(&o.shape)) {
-            add(sphere,
-                m * glm::scale(glm::translate(glm::mat4(1.0f), s->centre), vec3(s->radius)));
-        } else if (const auto* t = std::get_if<rt::Triangle>(&o.shape)) {
-            rt::TriangleMesh one;
-            one.positions = {t->a, t->b, t->c};
-            one.triangles = {{0, 1, 2}};
-            add(one, m);
-        }
     }
     return out;
 }
@@ -50,7 +38,7 @@ float hash01(std::uint32_t x) {
 
 vec3 cosine_direction(const vec3& n, std::uint32_t index) {
     const float u1 = hash01(2 * index + 1), u2 = hash01(2 * index + 2);
-    const float r = std::sqrt(u1), phi = 6.2831853f * u2;
+    const float r = std::sqrt(u1), phi = 2.0f * std::numbers::pi_v<float> * u2;
     vec3 t1, t2;
     rt::tangent_frame(n, t1, t2);
     return r * std::cos(phi) * t1 + r * std::sin(phi) * t2 +

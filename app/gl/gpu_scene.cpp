@@ -88,12 +88,8 @@ GpuScene::GpuScene(const Scene& scene) : scene_(scene), bounds_(scene.bounds()) 
         if (!points.empty()) points_[m] = std::make_unique<GpuMesh>(points, GL_POINTS);
     }
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
-        if (const auto* tri = std::get_if<Triangle>(&scene.objects[i].shape)) {
-            TriangleMesh m;
-            m.positions = {tri->a, tri->b, tri->c};
-            m.triangles = {{0, 1, 2}};
-            triangles_[i] = std::make_unique<GpuMesh>(m);
-        }
+        if (std::holds_alternative<Triangle>(scene.objects[i].shape))
+            triangles_[i] = std::make_unique<GpuMesh>(object_triangles(scene, scene.objects[i], 0));
     }
     quad_ = std::make_unique<GpuMesh>(plane_quad(Plane{{0, 0, 1}, 0}, glm::vec3(0.0f), 1.0f));
 }
