@@ -143,6 +143,9 @@ mutant item-buffer-tutorial-triangle core/scene.cpp \
     hit = Hit{h.t * (1.0f + 1e-6f), object, prim, h.b1, h.b2};' \
     rt_tests $(unit 'Triangle.*')
 
+mutant gl-handle-never-deletes app/gl/handle.h \
+    'if (id_ != 0) Kind::destroy(id_);' '(void)&Kind::destroy;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*LeakNoGlNames*'
 mutant glass-nesting-ignored core/medium.h \
     'Crossing c{ior(), 1.0f, *this};' 'Crossing c{1.0f, 1.0f, *this};' \
     rt_tests $(unit 'Refraction*:MediumStack.*')

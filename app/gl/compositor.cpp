@@ -8,16 +8,14 @@
 namespace rt::gl {
 
 Compositor::Compositor(const std::filesystem::path& shaders)
-    : program_(shaders / "fullscreen.vert", shaders / "present.frag") {
-    glGenVertexArrays(1, &vao_);  // the full-screen triangle comes from gl_VertexID
+    : program_(shaders / "fullscreen.vert", shaders / "present.frag"),
+      vao_(make_vertex_array()) {  // the full-screen triangle comes from gl_VertexID
     std::vector<vec3> heat(256);
     for (std::size_t i = 0; i < heat.size(); ++i)
         heat[i] = heat_colour(static_cast<float>(i) / 255.0f);
     heat_map_.upload_row(heat);
     set_item_palette(1);
 }
-
-Compositor::~Compositor() { glDeleteVertexArrays(1, &vao_); }
 
 void Compositor::set_item_palette(std::size_t object_count) {
     std::vector<vec3> colours(std::clamp<std::size_t>(object_count + 1, 2, 16384));
@@ -44,7 +42,7 @@ void Compositor::draw(const CompositeInputs& in, int width, int height) {
     program_.set("u_diff_scale", std::max(in.diff_scale, 1e-4f));
     program_.set("u_palette_size", palette_.width());
     glDisable(GL_DEPTH_TEST);
-    glBindVertexArray(vao_);
+    glBindVertexArray(vao_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     check("Compositor::draw");
 }

@@ -3,6 +3,7 @@
 // divider, their difference in false colour, or the item buffer; encoded to sRGB
 // by the same transfer function as the files.
 
+#include "app/gl/handle.h"
 #include "app/gl/program.h"
 #include "app/gl/texture.h"
 
@@ -24,7 +25,6 @@ struct CompositeInputs {
 class Compositor {
   public:
     explicit Compositor(const std::filesystem::path& shaders = shader_dir());
-    ~Compositor();
 
     // Draws into the bound framebuffer over the viewport (x, y, width, height).
     void draw(const CompositeInputs& in, int width, int height);
@@ -35,7 +35,7 @@ class Compositor {
     Program program_;
     Texture heat_map_;
     Texture palette_;
-    GLuint vao_ = 0;
+    VertexArrayHandle vao_;
 };
 
 }  // namespace rt::gl

@@ -9,13 +9,12 @@
 namespace rt::gl {
 
 Framebuffer::Framebuffer(Kind kind, int width, int height)
-    : kind_(kind), width_(width), height_(height) {
-    glGenFramebuffers(1, &fbo_);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    : kind_(kind), width_(width), height_(height), fbo_(make_framebuffer()) {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
     const int attachments = kind == Kind::kColour ? 1 : 2;
-    glGenTextures(attachments, colour_);
     for (int i = 0; i < attachments; ++i) {
-        glBindTexture(GL_TEXTURE_2D, colour_[i]);
+        colour_[i] = make_texture();
+        glBindTexture(GL_TEXTURE_2D, colour_[i].get());
         const bool colour = kind == Kind::kColour;
         glTexImage2D(GL_TEXTURE_2D, 0, colour ? GL_RGBA32F : GL_R32UI, width, height, 0,
                      colour ? GL_RGBA : GL_RED_INTEGER, colour ? GL_FLOAT : GL_UNSIGNED_INT,
@@ -23,12 +22,12 @@ Framebuffer::Framebuffer(Kind kind, int width, int height)
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i),
-                               GL_TEXTURE_2D, colour_[i], 0);
+                               GL_TEXTURE_2D, colour_[i].get(), 0);
     }
-    glGenRenderbuffers(1, &depth_);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+    depth_ = make_renderbuffer();
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
     const GLenum draw[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(attachments, draw);
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
@@ -37,14 +36,8 @@ Framebuffer::Framebuffer(Kind kind, int width, int height)
     check("Framebuffer");
 }
 
-Framebuffer::~Framebuffer() {
-    glDeleteFramebuffers(1, &fbo_);
-    glDeleteTextures(2, colour_);
-    glDeleteRenderbuffers(1, &depth_);
-}
-
 void Framebuffer::bind() const {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
     glViewport(0, 0, width_, height_);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
@@ -57,7 +50,7 @@ void Framebuffer::bind() const {
 
 Image Framebuffer::read_colour() const {
     Image image(width_, height_);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, width_, height_, GL_RGB, GL_FLOAT, image.pixels.data());
@@ -67,7 +60,7 @@ Image Framebuffer::read_colour() const {
 
 ItemBuffer Framebuffer::read_item_buffer() const {
     ItemBuffer ib(width_, height_);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, ib.object.data());

@@ -3,6 +3,7 @@
 // core's plain data (rt::Image, rt::ItemBuffer), bottom row first like GL.
 
 #include "app/gl/gl.h"
+#include "app/gl/handle.h"
 #include "core/image.h"
 #include "core/item_buffer.h"
 
@@ -16,14 +17,11 @@ class Framebuffer {
     };
 
     Framebuffer(Kind kind, int width, int height);
-    ~Framebuffer();
-    Framebuffer(const Framebuffer&) = delete;
-    Framebuffer& operator=(const Framebuffer&) = delete;
 
     int width() const { return width_; }
     int height() const { return height_; }
     // The colour attachments are textures, so a later pass can sample them.
-    GLuint texture(int attachment = 0) const { return colour_[attachment]; }
+    GLuint texture(int attachment = 0) const { return colour_[attachment].get(); }
     void bind() const;  // as the draw target, with the viewport set and cleared
 
     Image read_colour() const;
@@ -32,9 +30,9 @@ class Framebuffer {
   private:
     Kind kind_;
     int width_, height_;
-    GLuint fbo_ = 0;
-    GLuint colour_[2] = {0, 0};
-    GLuint depth_ = 0;
+    FramebufferHandle fbo_;
+    TextureHandle colour_[2];
+    RenderbufferHandle depth_;
 };
 
 }  // namespace rt::gl

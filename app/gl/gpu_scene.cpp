@@ -50,10 +50,10 @@ GpuMesh::GpuMesh(const std::vector<glm::vec3>& positions, GLenum mode) : mode_(m
 
 void GpuMesh::upload(const std::vector<Vertex>& vertices) {
     vertex_count_ = static_cast<GLsizei>(vertices.size());
-    glGenVertexArrays(1, &vao_);
-    glGenBuffers(1, &vbo_);
-    glBindVertexArray(vao_);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    vao_ = make_vertex_array();
+    vbo_ = make_buffer();
+    glBindVertexArray(vao_.get());
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_.get());
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                  vertices.data(), GL_STATIC_DRAW);
     for (GLuint a = 0; a < 3; ++a) {
@@ -66,43 +66,37 @@ void GpuMesh::upload(const std::vector<Vertex>& vertices) {
     check("GpuMesh upload");
 }
 
-GpuMesh::~GpuMesh() {
-    glDeleteBuffers(1, &vbo_);
-    glDeleteVertexArrays(1, &vao_);
-}
-
 void GpuMesh::draw(GLint first_vertex, GLsizei vertex_count) const {
-    glBindVertexArray(vao_);
+    glBindVertexArray(vao_.get());
     glDrawArrays(mode_, first_vertex, vertex_count);
 }
 
 GpuScene::GpuScene(const Scene& scene) : scene_(scene), bounds_(scene.bounds()) {
+    meshes_.reserve(scene.meshes.size());
     for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
         const TriangleMesh& mesh = scene.meshes[m];
-        meshes_.push_back(std::make_unique<GpuMesh>(mesh));
+        meshes_.emplace_back(mesh);
         std::vector<glm::vec3> ends, points;
         for (const glm::uvec2& segment : mesh.segments)
             ends.insert(ends.end(), {mesh.positions[segment[0]], mesh.positions[segment[1]]});
         for (std::uint32_t p : mesh.points) points.push_back(mesh.positions[p]);
-        if (!ends.empty()) lines_[m] = std::make_unique<GpuMesh>(ends, GL_LINES);
-        if (!points.empty()) points_[m] = std::make_unique<GpuMesh>(points, GL_POINTS);
+        if (!ends.empty()) lines_.try_emplace(m, ends, GL_LINES);
+        if (!points.empty()) points_.try_emplace(m, points, GL_POINTS);
     }
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         if (std::holds_alternative<Triangle>(scene.objects[i].shape))
-            triangles_[i] = std::make_unique<GpuMesh>(object_triangles(scene, scene.objects[i], 0));
+            triangles_.try_emplace(i, object_triangles(scene, scene.objects[i], 0));
     }
-    quad_ = std::make_unique<GpuMesh>(plane_quad(Plane{{0, 0, 1}, 0}, glm::vec3(0.0f), 1.0f));
+    quad_.emplace(plane_quad(Plane{{0, 0, 1}, 0}, glm::vec3(0.0f), 1.0f));
 }
-
-GpuScene::~GpuScene() = default;
 
 const GpuMesh& GpuScene::sphere_level(float radius_pixels) {
     const int wanted = sphere_segments_for(radius_pixels);
     const int level = *std::find_if(std::begin(kSphereLevels), std::end(kSphereLevels) - 1,
                                     [&](int l) { return l >= wanted; });
-    auto& mesh = spheres_[level];
-    if (!mesh) mesh = std::make_unique<GpuMesh>(tessellate_unit_sphere(level), true);
-    return *mesh;
+    auto it = spheres_.find(level);
+    if (it == spheres_.end()) it = spheres_.try_emplace(level, tessellate_unit_sphere(level), true).first;
+    return it->second;
 }
 
 // Far enough that the quad's edge is a fraction of a pixel below the true horizon.
@@ -129,7 +123,7 @@ void GpuScene::add_mesh_draws(std::uint32_t object, const Object& o, const MeshR
                               std::vector<DrawItem>& out) const {
     const TriangleMesh& mesh = scene_.meshes[ref.mesh];
     DrawItem item;
-    item.mesh = meshes_[ref.mesh].get();
+    item.mesh = &meshes_[ref.mesh];
     item.model = o.transform ? o.transform->m : glm::mat4(1.0f);
     item.object_id = object + 1;
     const bool per_triangle = ref.own_materials && !mesh.materials.empty();
@@ -155,7 +149,7 @@ void GpuScene::add_mesh_draws(std::uint32_t object, const Object& o, const MeshR
     for (const auto* wires : {&lines_, &points_}) {
         const auto it = wires->find(ref.mesh);
         if (it == wires->end()) continue;
-        item.mesh = it->second.get();
+        item.mesh = &it->second;
         item.vertex_count = item.mesh->vertex_count();
         out.push_back(item);
     }
@@ -187,10 +181,10 @@ std::vector<DrawItem> GpuScene::draw_list(const Camera& camera) {
             const glm::vec3 centre = eye - (glm::dot(eye, p->normal) - p->offset) * p->normal;
             item.shape = glm::mat4(glm::vec4(extent * t1, 0.0f), glm::vec4(extent * t2, 0.0f),
                                    glm::vec4(p->normal, 0.0f), glm::vec4(centre, 1.0f));
-            item.mesh = quad_.get();
+            item.mesh = &*quad_;
             item.plane = p;
         } else if (std::holds_alternative<Triangle>(o.shape)) {
-            item.mesh = triangles_.at(i).get();
+            item.mesh = &triangles_.at(i);
         } else {
             add_mesh_draws(i, o, std::get<MeshRef>(o.shape), out);
             continue;

@@ -5,10 +5,11 @@
 // frame under the eye and scaled far past the horizon.
 
 #include <map>
-#include <memory>
+#include <optional>
 #include <vector>
 
 #include "app/gl/gl.h"
+#include "app/gl/handle.h"
 #include "core/scene.h"
 
 namespace rt::gl {
@@ -20,9 +21,6 @@ class GpuMesh {
     explicit GpuMesh(const TriangleMesh& mesh, bool smooth_faces = false);
     // Lines (GL_LINES: two vertices a segment) or points (GL_POINTS), positions only.
     GpuMesh(const std::vector<glm::vec3>& positions, GLenum mode);
-    ~GpuMesh();
-    GpuMesh(const GpuMesh&) = delete;
-    GpuMesh& operator=(const GpuMesh&) = delete;
 
     void draw(GLint first_vertex, GLsizei vertex_count) const;
     GLsizei vertex_count() const { return vertex_count_; }
@@ -31,7 +29,8 @@ class GpuMesh {
     struct Vertex;
     void upload(const std::vector<Vertex>& vertices);
 
-    GLuint vao_ = 0, vbo_ = 0;
+    VertexArrayHandle vao_;
+    BufferHandle vbo_;
     GLsizei vertex_count_ = 0;
     GLenum mode_ = GL_TRIANGLES;
 };
@@ -59,7 +58,6 @@ struct DepthRange {
 class GpuScene {
   public:
     explicit GpuScene(const Scene& scene);
-    ~GpuScene();
 
     std::vector<DrawItem> draw_list(const Camera& camera);
     DepthRange depth_range(const Camera& camera) const;
@@ -72,11 +70,13 @@ class GpuScene {
 
     const Scene& scene_;
     Aabb bounds_;
-    std::vector<std::unique_ptr<GpuMesh>> meshes_;                 // per scene mesh
-    std::map<std::uint32_t, std::unique_ptr<GpuMesh>> lines_, points_;  // per scene mesh that has them
-    std::map<std::uint32_t, std::unique_ptr<GpuMesh>> triangles_;  // per triangle object
-    std::map<int, std::unique_ptr<GpuMesh>> spheres_;              // per level of detail
-    std::unique_ptr<GpuMesh> quad_;
+    // Draw items point into these, so they never move once made (a vector filled once,
+    // maps whose nodes stay put).
+    std::vector<GpuMesh> meshes_;                          // per scene mesh
+    std::map<std::uint32_t, GpuMesh> lines_, points_;      // per scene mesh that has them
+    std::map<std::uint32_t, GpuMesh> triangles_;           // per triangle object
+    std::map<int, GpuMesh> spheres_;                       // per level of detail
+    std::optional<GpuMesh> quad_;
 };
 
 }  // namespace rt::gl

@@ -42,19 +42,15 @@ std::string info_log(GLuint object, bool is_program) {
                 first_line.empty() ? "the shader does not compile" : first_line);
 }
 
-GLuint compile(GLenum stage, const std::filesystem::path& file) {
+ShaderHandle compile(GLenum stage, const std::filesystem::path& file) {
     const std::string source = read_source(file);
-    const GLuint shader = glCreateShader(stage);
+    ShaderHandle shader(glCreateShader(stage));
     const char* text = source.c_str();
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
+    glShaderSource(shader.get(), 1, &text, nullptr);
+    glCompileShader(shader.get());
     GLint ok = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        const std::string log = info_log(shader, false);
-        glDeleteShader(shader);
-        compile_failed(file, log);
-    }
+    glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
+    if (!ok) compile_failed(file, info_log(shader.get(), false));
     return shader;
 }
 
@@ -67,36 +63,25 @@ std::filesystem::path shader_dir() {
 
 Program::Program(const std::filesystem::path& vertex_file,
                  const std::filesystem::path& fragment_file) {
-    const GLuint vs = compile(GL_VERTEX_SHADER, vertex_file);
-    GLuint fs = 0;
-    try {
-        fs = compile(GL_FRAGMENT_SHADER, fragment_file);
-    } catch (...) {
-        glDeleteShader(vs);
-        throw;
-    }
-    id_ = glCreateProgram();
-    glAttachShader(id_, vs);
-    glAttachShader(id_, fs);
-    glLinkProgram(id_);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
+    const ShaderHandle vs = compile(GL_VERTEX_SHADER, vertex_file);
+    const ShaderHandle fs = compile(GL_FRAGMENT_SHADER, fragment_file);
+    id_ = ProgramHandle(glCreateProgram());
+    glAttachShader(id_.get(), vs.get());
+    glAttachShader(id_.get(), fs.get());
+    glLinkProgram(id_.get());
     GLint ok = GL_FALSE;
-    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    glGetProgramiv(id_.get(), GL_LINK_STATUS, &ok);
     if (!ok) {
-        const std::string log = info_log(id_, true);
-        glDeleteProgram(id_);
+        const std::string log = info_log(id_.get(), true);
         throw Error(fragment_file.string(), "link", log.substr(0, log.find('\n')));
     }
 }
-
-Program::~Program() { glDeleteProgram(id_); }
 
 GLint Program::location(const char* name) {
     const auto it = locations_.find(name);
     if (it != locations_.end()) return it->second;
     const GLint at =
-        glGetUniformLocation(id_, name);  // -1 (ignored by glUniform) if optimised away
+        glGetUniformLocation(id_.get(), name);  // -1 (ignored by glUniform) if optimised away
     locations_.emplace(name, at);
     return at;
 }

@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "app/gl/gl.h"
+#include "app/gl/handle.h"
 
 namespace rt::gl {
 
@@ -21,11 +22,8 @@ std::filesystem::path shader_dir();
 class Program {
   public:
     Program(const std::filesystem::path& vertex_file, const std::filesystem::path& fragment_file);
-    ~Program();
-    Program(const Program&) = delete;
-    Program& operator=(const Program&) = delete;
 
-    void use() const { glUseProgram(id_); }
+    void use() const { glUseProgram(id_.get()); }
     void set(const char* name, int value);
     void set(const char* name, unsigned value);
     void set(const char* name, float value);
@@ -36,7 +34,7 @@ class Program {
   private:
     GLint location(const char* name);
 
-    GLuint id_ = 0;
+    ProgramHandle id_;
     std::unordered_map<std::string, GLint> locations_;
 };
 

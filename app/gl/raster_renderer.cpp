@@ -113,10 +113,10 @@ void RasterRenderer::draw_ids(const Camera& camera) {
     check("RasterRenderer::draw_ids");
 }
 
-Framebuffer& RasterRenderer::target(std::unique_ptr<Framebuffer>& fb, Framebuffer::Kind kind,
+Framebuffer& RasterRenderer::target(std::optional<Framebuffer>& fb, Framebuffer::Kind kind,
                                     const Camera& camera) {
     if (!fb || fb->width() != camera.cols || fb->height() != camera.rows)
-        fb = std::make_unique<Framebuffer>(kind, camera.cols, camera.rows);
+        fb.emplace(kind, camera.cols, camera.rows);
     return *fb;
 }
 

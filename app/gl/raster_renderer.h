@@ -4,7 +4,7 @@
 // and no shadows, reflection or refraction. Also the item-buffer pass.
 
 #include <filesystem>
-#include <memory>
+#include <optional>
 
 #include "app/gl/framebuffer.h"
 #include "app/gl/gpu_scene.h"
@@ -41,7 +41,7 @@ class RasterRenderer {
     void draw_wires(const std::vector<DrawItem>& items, const Camera& camera);
     void set_material(const Material& m, const DrawItem& item);
     void set_object(Program& program, const DrawItem& item, const Camera& camera);
-    Framebuffer& target(std::unique_ptr<Framebuffer>& fb, Framebuffer::Kind kind,
+    Framebuffer& target(std::optional<Framebuffer>& fb, Framebuffer::Kind kind,
                         const Camera& camera);
 
     const Scene& scene_;
@@ -49,8 +49,8 @@ class RasterRenderer {
     Program phong_;
     Program ids_;
     Program wire_;
-    std::unique_ptr<Framebuffer> colour_target_;
-    std::unique_ptr<Framebuffer> id_target_;
+    std::optional<Framebuffer> colour_target_;
+    std::optional<Framebuffer> id_target_;
 };
 
 }  // namespace rt::gl

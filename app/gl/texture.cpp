@@ -4,19 +4,16 @@
 
 namespace rt::gl {
 
-Texture::Texture() {
-    glGenTextures(1, &id_);
-    glBindTexture(GL_TEXTURE_2D, id_);
+Texture::Texture() : id_(make_texture()) {
+    glBindTexture(GL_TEXTURE_2D, id_.get());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // coarse pixels stay square
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-Texture::~Texture() { glDeleteTextures(1, &id_); }
-
 void Texture::upload(const Image& image) {
-    glBindTexture(GL_TEXTURE_2D, id_);
+    glBindTexture(GL_TEXTURE_2D, id_.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     if (image.width != width_ || image.height != height_) {
         width_ = image.width;

@@ -8,6 +8,9 @@
 #include "../unit/test_util.h"
 #include "app/gl/context.h"
 #include "app/gl/debug.h"
+#include "app/gl/framebuffer.h"
+#include "app/gl/program.h"
+#include "app/gl/texture.h"
 #include "app/gl/gl.h"
 #include "app/gl/raster_renderer.h"
 #include "core/compare.h"
@@ -174,6 +177,39 @@ TEST_P(Gl, BrokenShaderIsALocatedError) {
     }
     std::filesystem::remove(dir / "phong.frag");
     EXPECT_THROW(gl::RasterRenderer(scene, dir), Error);  // missing
+}
+
+// GL names are held by self-deleting handles (app/gl/handle.h): constructions that throw
+// half-way (a shader that does not compile after one that did, a program that does not
+// link, a framebuffer that is incomplete) and moved-from objects leave no name behind.
+TEST_P(Gl, FailedConstructionsLeakNoGlNames) {
+    const auto live_names = [] {
+        int n = 0;
+        for (GLuint id = 1; id < 4096; ++id)
+            n += glIsShader(id) + glIsProgram(id) + glIsTexture(id) + glIsFramebuffer(id) +
+                 glIsRenderbuffer(id) + glIsBuffer(id) + glIsVertexArray(id);
+        return n;
+    };
+    const auto dir = test::temp_dir(std::string("leak_") +
+                                    (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
+    std::filesystem::copy_file(gl::shader_dir() / "raster.vert", dir / "raster.vert",
+                               std::filesystem::copy_options::overwrite_existing);
+    test::write_file(dir / "broken.frag", "#version 330 core\nvoid main() { syntax error }\n");
+    test::write_file(dir / "unlinked.frag",  // compiles, but calls what nothing defines
+                     "#version 330 core\nout vec4 c;\nvec4 nowhere();\nvoid main() { c = nowhere(); }\n");
+    const int before = live_names();
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_THROW(gl::Program(dir / "raster.vert", dir / "broken.frag"), Error);
+        EXPECT_THROW(gl::Program(dir / "raster.vert", dir / "unlinked.frag"), Error);
+        // A zero-sized attachment makes a framebuffer incomplete (GL 3.3, 4.4.4.2): it
+        // throws after its texture, renderbuffer and framebuffer names were made.
+        EXPECT_THROW(gl::Framebuffer(gl::Framebuffer::Kind::kItemBuffer, 0, 0), std::runtime_error);
+        gl::Texture moved_from;
+        gl::Texture texture = std::move(moved_from);
+        texture.upload(Image(2, 2));
+    }
+    EXPECT_EQ(live_names(), before);
+    gl::check("FailedConstructionsLeakNoGlNames");
 }
 
 // An OBJ of lines and points: the raster view draws them (in the material's diffuse
