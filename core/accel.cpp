@@ -2,26 +2,6 @@
 
 namespace rt {
 
-const char* accel_name(AccelKind kind) {
-    switch (kind) {
-        case AccelKind::kBvh:
-            return "bvh";
-        case AccelKind::kBvh2:
-            return "bvh2";
-        case AccelKind::kGrid:
-            return "grid";
-        case AccelKind::kBrute:
-            return "brute";
-    }
-    return "?";
-}
-
-std::optional<AccelKind> parse_accel(const std::string& name) {
-    for (AccelKind k : kAllAccelKinds)
-        if (name == accel_name(k)) return k;
-    return std::nullopt;
-}
-
 void Accel::build(std::span<const Aabb> boxes, AccelKind kind, std::uint32_t leaf_size) {
     kind_ = kind;
     order_.clear();

@@ -11,16 +11,21 @@
 
 #include "core/bvh.h"
 #include "core/grid.h"
+#include "core/names.h"
 #include "core/wide_bvh.h"
 
 namespace rt {
 
 enum class AccelKind { kBvh, kBvh2, kGrid, kBrute };  // kBvh: wide; kBvh2: binary
 
-const char* accel_name(AccelKind kind);
-std::optional<AccelKind> parse_accel(const std::string& name);  // "bvh", "bvh2", "grid", "brute"
-inline constexpr AccelKind kAllAccelKinds[] = {AccelKind::kBvh, AccelKind::kBvh2, AccelKind::kGrid,
-                                               AccelKind::kBrute};
+inline constexpr Named<AccelKind> kAccelNames[] = {{"bvh", AccelKind::kBvh},
+                                                   {"bvh2", AccelKind::kBvh2},
+                                                   {"grid", AccelKind::kGrid},
+                                                   {"brute", AccelKind::kBrute}};
+inline const char* accel_name(AccelKind kind) { return name_of(kAccelNames, kind); }
+inline std::optional<AccelKind> parse_accel(const std::string& name) {
+    return parse_named(kAccelNames, name);
+}
 
 // Tests every primitive: the reference the others must agree with.
 class BruteForce {

@@ -19,7 +19,7 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
     scene.camera = scene.camera.resized(o.width, o.height);
     scene.build();
     const auto context =
-        rt::gl::create_headless_context(rt::gl::parse_backend(o.gl, "rtbench"), "rtbench");
+        rt::gl::create_headless_context(o.gl, "rtbench");
     rt::gl::RasterRenderer raster(scene);
     rt::RenderOptions options;
     options.threads = o.threads;

@@ -9,13 +9,15 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench/modes.h"
+#include "app/common/cli_names.h"
 #include "app/common/size_arg.h"
 #include "core/error.h"
 
 int main(int argc, char** argv) {
     CLI::App app{
         "rtbench: BVH, grid and brute force against Intel Embree; the item buffer's saving"};
-    std::string scene, json, size = "1280x720", csv = "sweep.csv", png = "sweep.png", gl = "auto";
+    std::string scene, json, size = "1280x720", csv = "sweep.csv", png = "sweep.png";
+    rt::gl::Backend gl = rt::gl::Backend::kAuto;
     bool sweep = false, item_buffer = false;
     std::vector<std::string> only;
     std::vector<int> counts{1000, 10000, 100000, 1000000};
@@ -40,7 +42,7 @@ int main(int argc, char** argv) {
     app.add_option("--png", png, "--sweep: the plot (needs gnuplot)");
     app.add_flag("--item-buffer", item_buffer, "A Whitted frame with and without the item buffer");
     app.add_option("--gl", gl, "--item-buffer: egl, osmesa or auto")
-        ->check(CLI::IsMember({"egl", "osmesa", "auto"}));
+        ->transform(rt::app::cli_names(rt::gl::kBackendNames));
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

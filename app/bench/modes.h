@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/bench/measure.h"
+#include "app/gl/context.h"
 
 namespace rtbench {
 
@@ -34,7 +35,7 @@ struct ItemBufferBenchOptions {
     int width = 1280, height = 720;
     int threads = 2;
     int repeats = 5;
-    std::string gl = "auto";
+    rt::gl::Backend gl = rt::gl::Backend::kAuto;
 };
 int run_item_buffer(const ItemBufferBenchOptions& options);
 

@@ -8,14 +8,6 @@
 
 namespace rt::gl {
 
-Backend parse_backend(const std::string& name, const std::string& program) {
-    if (name == "egl") return Backend::kEgl;
-    if (name == "osmesa") return Backend::kOsmesa;
-    if (name == "auto") return Backend::kAuto;
-    throw Error(program, "--gl",
-                "unknown GL back-end \"" + name + "\" (expected egl, osmesa or auto)");
-}
-
 namespace detail {
 
 std::string load_gl(ProcLoader loader) {

@@ -5,9 +5,13 @@
 #include <memory>
 #include <string>
 
+#include "core/names.h"
+
 namespace rt::gl {
 
 enum class Backend { kAuto, kEgl, kOsmesa };
+inline constexpr Named<Backend> kBackendNames[] = {
+    {"egl", Backend::kEgl}, {"osmesa", Backend::kOsmesa}, {"auto", Backend::kAuto}};
 
 class Context {
   public:
@@ -24,8 +28,6 @@ class Context {
 // kAuto tries EGL first, then OSMesa. Throws rt::Error ("PROGRAM: --gl: ...") when no
 // context can be made, saying why each attempt failed.
 std::unique_ptr<Context> create_headless_context(Backend backend, const std::string& program);
-Backend parse_backend(const std::string& name,
-                      const std::string& program);  // "egl", "osmesa", "auto"
 
 namespace detail {
 using ProcLoader = void* (*)(const char*);

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/common/cli_names.h"
 #include "app/render/options.h"
 #include "core/error.h"
 #include "core/scene_loader.h"
@@ -22,12 +23,12 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     app.add_option("-o,--output", o.output, "Output image (.png or .exr); default out/SCENE.png");
     app.add_option("--mode", o.mode,
                    "trace, raster, both (raster, traced and difference) or itembuffer")
-        ->check(CLI::IsMember({"trace", "raster", "both", "itembuffer"}));
+        ->transform(rt::app::cli_names(kModeNames));
     app.add_option("--gl", o.gl, "OpenGL context: egl, osmesa, or auto (EGL, then OSMesa)")
-        ->check(CLI::IsMember({"egl", "osmesa", "auto"}));
+        ->transform(rt::app::cli_names(rt::gl::kBackendNames));
     app.add_option("--accel", o.accel,
                    "Acceleration structure: bvh (wide, default), bvh2 (binary), grid or brute")
-        ->check(CLI::IsMember({"bvh", "bvh2", "grid", "brute"}));
+        ->transform(rt::app::cli_names(rt::kAccelNames));
     app.add_option("--item-buffer", item_buffer,
                    "Primary hits from the raster item buffer: on or off")
         ->check(CLI::IsMember({"on", "off"}));

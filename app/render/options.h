@@ -3,18 +3,27 @@
 
 #include <string>
 
+#include "app/gl/context.h"
+#include "core/accel.h"
+#include "core/names.h"
 #include "core/tracer.h"
 
 namespace rtrender {
+
+enum class Mode { kTrace, kRaster, kBoth, kItemBuffer };
+inline constexpr rt::Named<Mode> kModeNames[] = {{"trace", Mode::kTrace},
+                                                 {"raster", Mode::kRaster},
+                                                 {"both", Mode::kBoth},
+                                                 {"itembuffer", Mode::kItemBuffer}};
 
 struct Options {
     std::string scene;
     std::string output;          // empty: out/SCENE.png
     std::string size;            // WxH, empty: the scene's
     std::string stats;           // JSON file, empty: none
-    std::string mode = "trace";  // trace | raster | both | itembuffer
-    std::string gl = "auto";     // egl | osmesa | auto
-    std::string accel = "bvh";   // bvh (wide) | bvh2 (binary) | grid | brute
+    Mode mode = Mode::kTrace;
+    rt::gl::Backend gl = rt::gl::Backend::kAuto;
+    rt::AccelKind accel = rt::AccelKind::kBvh;
     std::string up = "y";        // a bare mesh's up axis (rt::LoadOptions)
     bool item_buffer = false;
     int threads = 0;

@@ -74,7 +74,7 @@ class Job {
 rt::gl::RasterRenderer& Job::raster() {
     if (!raster_) {
         context_ =
-            rt::gl::create_headless_context(rt::gl::parse_backend(o_.gl, "rtrender"), "rtrender");
+            rt::gl::create_headless_context(o_.gl, "rtrender");
         stats_["gl"] = context_->description();
         if (!o_.quiet) std::printf("OpenGL: %s\n", context_->description().c_str());
         raster_ = std::make_unique<rt::gl::RasterRenderer>(loaded_.scene);
@@ -182,7 +182,7 @@ void Job::report_diff(const rt::Image& raster_image, const rt::Image& traced) {
 void Job::write_stats() {
     const rt::Scene& scene = loaded_.scene;
     stats_["scene"] = o_.scene;
-    stats_["mode"] = o_.mode;
+    stats_["mode"] = rt::name_of(kModeNames, o_.mode);
     stats_["width"] = scene.camera.cols;
     stats_["height"] = scene.camera.rows;
     stats_["objects"] = scene.objects.size();
@@ -217,21 +217,21 @@ int Job::run() {
     start = Clock::now();
     {
         const PhaseLine phase(show_phases, "building the acceleration structures");
-        scene.build(*rt::parse_accel(o_.accel));  // CLI11 allowed only known names
+        scene.build(o_.accel);
     }
     stats_["build_seconds"] = seconds_since(start);
-    stats_["accel"] = o_.accel;
+    stats_["accel"] = rt::accel_name(o_.accel);
 
-    if (o_.mode == "trace") {
+    if (o_.mode == Mode::kTrace) {
         write(trace(), main_output, o_);
-    } else if (o_.mode == "itembuffer") {
+    } else if (o_.mode == Mode::kItemBuffer) {
         write(rt::item_buffer_image(raster().render_item_buffer(scene.camera)), main_output, o_);
     } else {
         rt::gl::RasterRenderer& gl = raster();
         start = Clock::now();
         const rt::Image raster_image = gl.render(scene.camera);
         stats_["raster_seconds"] = seconds_since(start);
-        if (o_.mode == "raster") {
+        if (o_.mode == Mode::kRaster) {
             write(raster_image, main_output, o_);
         } else {
             const rt::Image traced = trace();

@@ -1,4 +1,5 @@
 #include "app/viewer/viewer.h"
+#include "app/viewer/views.h"
 
 #include <cstdio>
 #include <iostream>
@@ -18,22 +19,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 Viewer* viewer_of(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
-
-const char* view_name(View v) {
-    switch (v) {
-        case View::kRaster:
-            return "raster";
-        case View::kTrace:
-            return "traced";
-        case View::kSplit:
-            return "split";
-        case View::kDiff:
-            return "difference";
-        case View::kItemBuffer:
-            return "item buffer";
-    }
-    return "?";
-}
 
 constexpr double kRestSeconds = 0.2;  // the camera rests this long before full refinement
 
@@ -266,14 +251,14 @@ int Viewer::run() {
 
 void Viewer::set_view(View view) {
     view_ = view;
-    std::printf("view: %s\n", view_name(view));
+    std::printf("view: %s\n", view_label(view));
     std::fflush(stdout);
     update_title();
 }
 
 void Viewer::update_title() {
     std::string title = "rtview - " + std::filesystem::path(scene_path_).filename().string() +
-                        " - " + view_name(view_);
+                        " - " + view_label(view_);
     title += stats_.level == 1 ? " - traced" : " - tracing";
     if (title != title_) window_.set_title(title);
     title_ = title;
@@ -287,7 +272,8 @@ void Viewer::on_key(int key, int action, int mods) {
         std::fflush(stdout);
     }
     if (action != GLFW_PRESS) return;
-    if (key >= GLFW_KEY_1 && key <= GLFW_KEY_5) return set_view(static_cast<View>(key - GLFW_KEY_1));
+    if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + static_cast<int>(kViewCount))
+        return set_view(kViews[key - GLFW_KEY_1].value);
     switch (key) {
         case GLFW_KEY_X:
             swap_ = !swap_;

@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "app/viewer/viewer.h"
+#include "app/viewer/views.h"
 #include "core/compare.h"
 #include "core/scene_loader.h"
 
@@ -98,11 +99,10 @@ void Viewer::draw_panel() {
     if (ImGui::SliderInt("threads", &threads, 1, std::max(cores, 16))) settings_.threads = threads;
 
     section("view");
-    const char* names[] = {"1 raster", "2 traced", "3 split", "4 difference", "5 item buffer"};
-    for (int i = 0; i < 5; ++i) {
-        if (ImGui::RadioButton(names[i], view_ == static_cast<View>(i)))
-            set_view(static_cast<View>(i));
-        if (i % 3 != 2 && i != 4) ImGui::SameLine();
+    for (std::size_t i = 0; i < kViewCount; ++i) {
+        const std::string label = std::to_string(i + 1) + " " + kViews[i].label;
+        if (ImGui::RadioButton(label.c_str(), view_ == kViews[i].value)) set_view(kViews[i].value);
+        if (i % 3 != 2 && i + 1 != kViewCount) ImGui::SameLine();
     }
     if (view_ == View::kSplit) {
         ImGui::Checkbox("swap sides (X)", &swap_);
@@ -179,7 +179,12 @@ void Viewer::draw_help() {
     ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, screen.y * 0.5f), ImGuiCond_Always,
                             ImVec2(0.5f, 0.5f));
     ImGui::Begin("keys", &help_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
-    const char* rows[][2] = {{"1 2 3 4 5", "raster, traced, split, difference, item buffer"},
+    std::string view_keys, view_labels;
+    for (std::size_t i = 0; i < kViewCount; ++i) {
+        view_keys += (i ? " " : "") + std::to_string(i + 1);
+        view_labels += (i ? ", " : "") + std::string(kViews[i].label);
+    }
+    const char* rows[][2] = {{view_keys.c_str(), view_labels.c_str()},
                              {"Tab (hold)", "flicker between raster and traced"},
                              {"X", "swap the split view's sides"},
                              {"H", "hide or show this panel"},

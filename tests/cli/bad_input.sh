@@ -97,6 +97,8 @@ check "unknown flag" "rtrender" -- "$scene" --shadows-please
 check "directory as scene" "$corpus" -- "$corpus"
 check "--gl nonsense" "rtrender" -- "$scene" --mode raster --gl nonsense
 check "--up nonsense" "rtrender" -- "$scene" --up w
+check "--mode by number" "rtrender" -- "$scene" --mode 2
+check "--accel nonsense" "rtrender" -- "$scene" --accel kdtree
 # No EGL vendor library: EGL cannot start, and --gl egl allows no fallback.
 export __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json
 check "no EGL" "rtrender" -- "$scene" --mode raster --gl egl
