@@ -29,7 +29,8 @@ void TriangleMesh::build(AccelKind kind) {
     accel_.for_each_leaf([&](std::uint32_t first, std::uint32_t count) {
         leaf_pack_[first] = static_cast<std::uint32_t>(packs_.size());
         for (std::uint32_t i = 0; i < count; ++i) {
-            if (i % kTriangle4Lanes == 0) packs_.emplace_back();  // zeroed: the spare lanes never hit
+            if (i % kTriangle4Lanes == 0)
+                packs_.emplace_back();  // zeroed: the spare lanes never hit
             set(packs_.back(), static_cast<int>(i % kTriangle4Lanes), first + i);
         }
     });
@@ -147,7 +148,8 @@ std::size_t drop_duplicate_triangles(TriangleMesh& mesh) {
         if (!seen.insert({v[first], v[(first + 1) % 3], v[(first + 2) % 3]}).second) continue;
         mesh.triangles[kept] = mesh.triangles[t];
         if (normals)
-            for (int k = 0; k < 3; ++k) mesh.corner_normals[3 * kept + k] = mesh.corner_normals[3 * t + k];
+            for (int k = 0; k < 3; ++k)
+                mesh.corner_normals[3 * kept + k] = mesh.corner_normals[3 * t + k];
         if (materials) mesh.materials[kept] = mesh.materials[t];
         ++kept;
     }
@@ -204,7 +206,8 @@ void compute_corner_normals(TriangleMesh& mesh, float crease_degrees) {
         corner_dir.clear();
         for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
             const std::uint32_t t = faces_at[i];
-            const auto [it, added] = dir_of.try_emplace(unit[t], static_cast<std::uint32_t>(dirs.size()));
+            const auto [it, added] =
+                dir_of.try_emplace(unit[t], static_cast<std::uint32_t>(dirs.size()));
             if (added) dirs.push_back({unit[t], vec3(0.0f), vec3(0.0f)});
             dirs[it->second].sum += face[t];  // length = 2 x area: area weighting
             corner_dir.push_back(it->second);
@@ -213,7 +216,8 @@ void compute_corner_normals(TriangleMesh& mesh, float crease_degrees) {
         for (Direction& own : dirs) {
             vec3 sum(0.0f);
             for (const Direction& other : dirs)
-                if (!flat && other.unit != vec3(0.0f) && glm::dot(own.unit, other.unit) >= cos_crease)
+                if (!flat && other.unit != vec3(0.0f) &&
+                    glm::dot(own.unit, other.unit) >= cos_crease)
                     sum += other.sum;
             const float sum_len = glm::length(sum);
             own.result = sum_len > 0.0f ? sum / sum_len : own.unit;

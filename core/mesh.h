@@ -67,7 +67,9 @@ struct MeshInstance {
         return s;
     }
     template <class V>
-    V pattern_point(const V& p) const { return p; }
+    V pattern_point(const V& p) const {
+        return p;
+    }
     std::size_t triangle_count() const { return mesh.triangles.size(); }
 };
 

@@ -124,7 +124,8 @@ vec3 Scene::pattern_shift(std::uint32_t object, std::uint32_t material) const {
     const Object& o = objects[object];
     const Material& m = materials[material];
     if (o.transform || !m.checker || origin == glm::dvec3(0.0)) return vec3(0.0f);
-    return m.checker->shift(visit_shape(o, [&](const auto& shape) { return shape.pattern_point(origin); }));
+    return m.checker->shift(
+        visit_shape(o, [&](const auto& shape) { return shape.pattern_point(origin); }));
 }
 
 Aabb Scene::bounds() const {

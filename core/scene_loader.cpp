@@ -211,7 +211,8 @@ glm::dmat4 read_transform(const JsonValue& j) {
     }
     glm::dmat4 m(1.0);
     if (const auto s = j.find("scale"))
-        m = glm::scale(glm::dmat4(1.0), s->is_number() ? glm::dvec3(s->number_double()) : s->dvector3());
+        m = glm::scale(glm::dmat4(1.0),
+                       s->is_number() ? glm::dvec3(s->number_double()) : s->dvector3());
     if (const auto r = j.find("rotate")) {
         const glm::dvec3 deg = r->dvector3();
         for (int axis = 0; axis < 3; ++axis) {
@@ -237,16 +238,18 @@ void JsonSceneReader::read_object(const JsonValue& j) {
     const auto position = [&](const JsonValue& v) { return placed ? v.vector3() : point(v); };
     if (type == "sphere") {
         j.keys({"type", "name", "material", "transform", "center", "radius"});
-        o.shape = Sphere{j.has("center") ? position(j["center"]) : vec3(placed ? glm::dvec3(0.0) : -origin_),
-                         j.has("radius") ? j["radius"].number_above(0.0f) : 1.0f};
+        o.shape = Sphere{
+            j.has("center") ? position(j["center"]) : vec3(placed ? glm::dvec3(0.0) : -origin_),
+            j.has("radius") ? j["radius"].number_above(0.0f) : 1.0f};
     } else if (type == "plane") {
         j.keys({"type", "name", "material", "transform", "normal", "offset", "point"});
         const vec3 n = unit_vector(j["normal"]);
         if (j.has("offset") && j.has("point")) j.fail("give either offset or point, not both");
         // n . x = offset, and with x = x' + origin: n . x' = offset - n . origin.
         const glm::dvec3 shift = placed ? glm::dvec3(0.0) : origin_;
-        const double offset = j.has("point") ? glm::dot(j["point"].dvector3(), glm::dvec3(n))
-                                             : (j.has("offset") ? j["offset"].number_double() : 0.0);
+        const double offset = j.has("point")
+                                  ? glm::dot(j["point"].dvector3(), glm::dvec3(n))
+                                  : (j.has("offset") ? j["offset"].number_double() : 0.0);
         o.shape = Plane{n, static_cast<float>(offset - glm::dot(shift, glm::dvec3(n)))};
     } else if (type == "triangle") {
         j.keys({"type", "name", "material", "transform", "vertices"});
@@ -267,8 +270,8 @@ void JsonSceneReader::read_object(const JsonValue& j) {
     o.material = j.has("material") ? material_index(j["material"]) : material_names_.at("default");
     const glm::dmat4 placement =
         (j.has("transform") ? read_transform(j["transform"]) : glm::dmat4(1.0)) * pre;
-    const glm::mat4 m = placed ? glm::mat4(glm::translate(glm::dmat4(1.0), -origin_) * placement)
-                               : glm::mat4(1.0f);
+    const glm::mat4 m =
+        placed ? glm::mat4(glm::translate(glm::dmat4(1.0), -origin_) * placement) : glm::mat4(1.0f);
     if (m != glm::mat4(1.0f)) {
         o.transform = Transform::from_matrix(m);
         if (!o.transform)
@@ -382,7 +385,8 @@ glm::mat3 up_rotation(const std::filesystem::path& path, const std::string& up) 
     if (up == "-z") return {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
     if (up == "x") return {{0, 1, 0}, {-1, 0, 0}, {0, 0, 1}};
     if (up == "-x") return {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}};
-    throw Error(path.string(), "--up", "unknown axis \"" + up + "\" (expected x, y, z, -x, -y or -z)");
+    throw Error(path.string(), "--up",
+                "unknown axis \"" + up + "\" (expected x, y, z, -x, -y or -z)");
 }
 
 }  // namespace

@@ -45,7 +45,9 @@ struct Sphere {
     bool occluded(const Ray& r, float t_max) const;
     LocalSurface surface(const Ray& r, const Hit& hit) const;
     template <class V>
-    V pattern_point(const V& p) const { return p; }
+    V pattern_point(const V& p) const {
+        return p;
+    }
     std::size_t triangle_count() const { return 0; }
 };
 
@@ -76,7 +78,9 @@ struct Triangle {
     bool occluded(const Ray& r, float t_max) const;
     LocalSurface surface(const Ray& r, const Hit& hit) const;
     template <class V>
-    V pattern_point(const V& p) const { return p; }
+    V pattern_point(const V& p) const {
+        return p;
+    }
     std::size_t triangle_count() const { return 1; }
 };
 

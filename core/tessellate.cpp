@@ -90,8 +90,8 @@ TriangleMesh triangles_of(const Plane&, int) { return {}; }
 }  // namespace
 
 TriangleMesh object_triangles(const Scene& scene, const Object& object, int sphere_segments) {
-    return scene.visit_shape(object,
-                             [&](const auto& shape) { return triangles_of(shape, sphere_segments); });
+    return scene.visit_shape(
+        object, [&](const auto& shape) { return triangles_of(shape, sphere_segments); });
 }
 
 }  // namespace rt

@@ -13,7 +13,7 @@
 #include "core/mesh.h"
 #include "core/scene.h"
 
-namespace rtbench {
+namespace rt::bench {
 
 using rt::vec3;
 
@@ -62,4 +62,4 @@ void parallel_for(std::size_t count, int threads,
 
 double median(std::vector<double> values);
 
-}  // namespace rtbench
+}  // namespace rt::bench

@@ -10,7 +10,7 @@
 #include "app/bench/bench.h"
 #include "core/tessellate.h"
 
-namespace rtbench {
+namespace rt::bench {
 
 rt::TriangleMesh flatten(const rt::Scene& scene) {
     rt::TriangleMesh out;
@@ -127,4 +127,4 @@ class Ours : public Structure {
 
 std::unique_ptr<Structure> make_ours(rt::AccelKind kind) { return std::make_unique<Ours>(kind); }
 
-}  // namespace rtbench
+}  // namespace rt::bench

@@ -12,7 +12,7 @@
 #include "core/simd.h"
 #include "core/tessellate.h"
 
-namespace rtbench {
+namespace rt::bench {
 namespace {
 
 struct Entry {
@@ -212,4 +212,4 @@ int run_scene(const SceneBenchOptions& o) {
     return ok ? 0 : 1;
 }
 
-}  // namespace rtbench
+}  // namespace rt::bench

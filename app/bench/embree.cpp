@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace rtbench {
+namespace rt::bench {
 namespace {
 
 class Embree : public Structure {
@@ -102,13 +102,13 @@ class Embree : public Structure {
 std::unique_ptr<Structure> make_embree(int threads) { return std::make_unique<Embree>(threads); }
 bool have_embree() { return true; }
 
-}  // namespace rtbench
+}  // namespace rt::bench
 
 #else
 
-namespace rtbench {
+namespace rt::bench {
 std::unique_ptr<Structure> make_embree(int) { return nullptr; }
 bool have_embree() { return false; }
-}  // namespace rtbench
+}  // namespace rt::bench
 
 #endif

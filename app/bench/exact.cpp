@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-namespace rtbench {
+namespace rt::bench {
 namespace {
 
 // Relative margins, far above double's rounding and far below float's: a ray this near
@@ -49,9 +49,9 @@ ExactAnswer ExactTracer::trace(const rt::Ray& ray, float t_max, bool any_hit) co
     best.t = limit;
     double second = limit;  // the next-nearest hit, for ties between triangles
     for (const glm::uvec3& tri : mesh_.triangles) {
-        const DoubleHit h = intersect(o, d, glm::dvec3(mesh_.positions[tri[0]]),
-                                      glm::dvec3(mesh_.positions[tri[1]]),
-                                      glm::dvec3(mesh_.positions[tri[2]]));
+        const DoubleHit h =
+            intersect(o, d, glm::dvec3(mesh_.positions[tri[0]]),
+                      glm::dvec3(mesh_.positions[tri[1]]), glm::dvec3(mesh_.positions[tri[2]]));
         if (!h.hit && !h.grazing) continue;
         const bool near_end = std::fabs(h.t) <= kTMargin * std::max(1.0, h.t) ||
                               (std::isfinite(limit) && std::fabs(h.t - limit) <= kTMargin * limit);
@@ -82,4 +82,4 @@ bool ExactTracer::agrees(const ExactAnswer& exact, const Result& answer, bool oc
     return std::fabs(answer.t - exact.t) <= 1e-4 * std::max(exact.t, 1e-3);
 }
 
-}  // namespace rtbench
+}  // namespace rt::bench

@@ -7,7 +7,7 @@
 
 #include "app/bench/bench.h"
 
-namespace rtbench {
+namespace rt::bench {
 
 struct ExactAnswer {
     bool hit = false;
@@ -27,4 +27,4 @@ class ExactTracer {
     const rt::TriangleMesh& mesh_;
 };
 
-}  // namespace rtbench
+}  // namespace rt::bench

@@ -11,15 +11,14 @@
 #include "core/renderer.h"
 #include "core/scene_loader.h"
 
-namespace rtbench {
+namespace rt::bench {
 
 int run_item_buffer(const ItemBufferBenchOptions& o) {
     rt::LoadedScene loaded = rt::load_scene(o.scene);
     rt::Scene& scene = loaded.scene;
     scene.camera = scene.camera.resized(o.width, o.height);
     scene.build();
-    const auto context =
-        rt::gl::create_headless_context(o.gl, "rtbench");
+    const auto context = rt::gl::create_headless_context(o.gl, "rtbench");
     rt::gl::RasterRenderer raster(scene);
     rt::RenderOptions options;
     options.threads = o.threads;
@@ -81,4 +80,4 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
     return diff.share_over <= 0.001 ? 0 : 1;
 }
 
-}  // namespace rtbench
+}  // namespace rt::bench

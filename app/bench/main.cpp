@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
         std::cerr << "rtbench: command line: " << e.what() << " (see rtbench --help)\n";
         return 1;
     }
-    const auto parsed = rtapp::parse_size(size);
+    const auto parsed = rt::app::parse_size(size);
     if (!parsed) {
         std::cerr << "rtbench: --size: expected WxH, got \"" << size << "\"\n";
         return 1;
@@ -62,20 +62,21 @@ int main(int argc, char** argv) {
         return 1;
     }
     const auto [w, h] = *parsed;
-    rtbench::MeasureOptions measure;
+    rt::bench::MeasureOptions measure;
     measure.threads = threads;
     measure.repeats = repeats;
     try {
         if (sweep) {
-            rtbench::SweepOptions o;
+            rt::bench::SweepOptions o;
             o.csv = csv;
             o.png = png;
             o.measure = measure;
             o.triangle_counts = counts;
-            return rtbench::run_sweep(o);
+            return rt::bench::run_sweep(o);
         }
-        if (item_buffer) return rtbench::run_item_buffer({scene, json, w, h, threads, repeats, gl});
-        return rtbench::run_scene({scene, only, json, w, h, measure});
+        if (item_buffer)
+            return rt::bench::run_item_buffer({scene, json, w, h, threads, repeats, gl});
+        return rt::bench::run_scene({scene, only, json, w, h, measure});
     } catch (const rt::Error& e) {
         std::cerr << e.what() << '\n';
         return 1;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace rtbench {
+namespace rt::bench {
 
 namespace {
 
@@ -106,4 +106,4 @@ nlohmann::json to_json(const Mismatches& m) {
             {"ok", m.ok()}};
 }
 
-}  // namespace rtbench
+}  // namespace rt::bench

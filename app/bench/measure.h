@@ -6,7 +6,7 @@
 #include "app/bench/bench.h"
 #include "app/bench/exact.h"
 
-namespace rtbench {
+namespace rt::bench {
 
 struct MeasureOptions {
     int threads = 2;
@@ -50,4 +50,4 @@ Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::s
 nlohmann::json to_json(const SetTiming& t);
 nlohmann::json to_json(const Mismatches& m);
 
-}  // namespace rtbench
+}  // namespace rt::bench

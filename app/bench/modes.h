@@ -6,7 +6,7 @@
 #include "app/bench/measure.h"
 #include "app/gl/context.h"
 
-namespace rtbench {
+namespace rt::bench {
 
 struct SceneBenchOptions {
     std::string scene;
@@ -39,4 +39,4 @@ struct ItemBufferBenchOptions {
 };
 int run_item_buffer(const ItemBufferBenchOptions& options);
 
-}  // namespace rtbench
+}  // namespace rt::bench

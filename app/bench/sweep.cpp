@@ -12,7 +12,7 @@
 #include "core/error.h"
 #include "core/tessellate.h"
 
-namespace rtbench {
+namespace rt::bench {
 namespace {
 
 // slices s, stacks s/2: s * s - 2 s triangles.
@@ -109,4 +109,4 @@ int run_sweep(const SweepOptions& o) {
     return 0;
 }
 
-}  // namespace rtbench
+}  // namespace rt::bench

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-namespace rtapp {
+namespace rt::app {
 
 // Width and height from "WxH" (or "WXH"), each in [lo, hi]; nothing if malformed.
 inline std::optional<std::pair<int, int>> parse_size(const std::string& text, int lo = 1,
@@ -21,4 +21,4 @@ inline std::optional<std::pair<int, int>> parse_size(const std::string& text, in
     return std::make_pair(w, h);
 }
 
-}  // namespace rtapp
+}  // namespace rt::app

@@ -95,7 +95,8 @@ const GpuMesh& GpuScene::sphere_level(float radius_pixels) {
     const int level = *std::find_if(std::begin(kSphereLevels), std::end(kSphereLevels) - 1,
                                     [&](int l) { return l >= wanted; });
     auto it = spheres_.find(level);
-    if (it == spheres_.end()) it = spheres_.try_emplace(level, tessellate_unit_sphere(level), true).first;
+    if (it == spheres_.end())
+        it = spheres_.try_emplace(level, tessellate_unit_sphere(level), true).first;
     return it->second;
 }
 

@@ -42,10 +42,10 @@ struct DrawItem {
     glm::mat4 model{1.0f};  // object space -> world (the object's transform)
     glm::mat4 shape{1.0f};  // mesh vertices -> object space (sphere centre and radius, plane frame)
     std::uint32_t material = 0;
-    std::uint32_t object_id = 0;   // object index + 1, as the item buffer stores it
-    std::uint32_t prim_base = 0;   // index of the draw's first triangle in its mesh
-    const Plane* plane = nullptr;  // for the checker's in-plane coordinates
-    bool sphere = false;           // the mesh is the unit sphere: normals are its positions
+    std::uint32_t object_id = 0;    // object index + 1, as the item buffer stores it
+    std::uint32_t prim_base = 0;    // index of the draw's first triangle in its mesh
+    const Plane* plane = nullptr;   // for the checker's in-plane coordinates
+    bool sphere = false;            // the mesh is the unit sphere: normals are its positions
     glm::vec3 pattern_shift{0.0f};  // Scene::pattern_shift of the object and material
     bool wire = false;  // a mesh's lines or points: raster only, unlit, not in the item buffer
 };
@@ -72,10 +72,10 @@ class GpuScene {
     Aabb bounds_;
     // Draw items point into these, so they never move once made (a vector filled once,
     // maps whose nodes stay put).
-    std::vector<GpuMesh> meshes_;                          // per scene mesh
-    std::map<std::uint32_t, GpuMesh> lines_, points_;      // per scene mesh that has them
-    std::map<std::uint32_t, GpuMesh> triangles_;           // per triangle object
-    std::map<int, GpuMesh> spheres_;                       // per level of detail
+    std::vector<GpuMesh> meshes_;                      // per scene mesh
+    std::map<std::uint32_t, GpuMesh> lines_, points_;  // per scene mesh that has them
+    std::map<std::uint32_t, GpuMesh> triangles_;       // per triangle object
+    std::map<int, GpuMesh> spheres_;                   // per level of detail
     std::optional<GpuMesh> quad_;
 };
 

@@ -13,7 +13,7 @@
 #include "core/error.h"
 #include "core/scene_loader.h"
 
-namespace rtrender {
+namespace rt::renderer {
 
 bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     CLI::App app{"rtrender: renders a scene with rtview's Whitted ray tracer and/or OpenGL"};
@@ -34,7 +34,8 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
         ->check(CLI::IsMember({"on", "off"}));
     app.add_option("--size", o.size, "Image size WxH (default: the scene's resolution)");
     app.add_option("--up", o.up, "A bare mesh's up axis: y (default), z, x, -y, -z or -x")
-        ->check(CLI::IsMember(std::vector<std::string>(std::begin(rt::kUpAxes), std::end(rt::kUpAxes))));
+        ->check(CLI::IsMember(
+            std::vector<std::string>(std::begin(rt::kUpAxes), std::end(rt::kUpAxes))));
     app.add_option("--threads", o.threads, "Worker threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
     app.add_option("--max-depth", o.trace.max_depth, "Maximum reflection/refraction depth")
@@ -64,14 +65,14 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     return true;
 }
 
-}  // namespace rtrender
+}  // namespace rt::renderer
 
 int main(int argc, char** argv) {
-    rtrender::Options options;
+    rt::renderer::Options options;
     int exit_code = 0;
-    if (!rtrender::parse_command_line(argc, argv, options, exit_code)) return exit_code;
+    if (!rt::renderer::parse_command_line(argc, argv, options, exit_code)) return exit_code;
     try {
-        return rtrender::run(options);
+        return rt::renderer::run(options);
     } catch (const rt::Error& e) {
         std::cerr << e.what() << '\n';
         return 1;

@@ -8,7 +8,7 @@
 #include "core/names.h"
 #include "core/tracer.h"
 
-namespace rtrender {
+namespace rt::renderer {
 
 enum class Mode { kTrace, kRaster, kBoth, kItemBuffer };
 inline constexpr rt::Named<Mode> kModeNames[] = {{"trace", Mode::kTrace},
@@ -18,13 +18,13 @@ inline constexpr rt::Named<Mode> kModeNames[] = {{"trace", Mode::kTrace},
 
 struct Options {
     std::string scene;
-    std::string output;          // empty: out/SCENE.png
-    std::string size;            // WxH, empty: the scene's
-    std::string stats;           // JSON file, empty: none
+    std::string output;  // empty: out/SCENE.png
+    std::string size;    // WxH, empty: the scene's
+    std::string stats;   // JSON file, empty: none
     Mode mode = Mode::kTrace;
     rt::gl::Backend gl = rt::gl::Backend::kAuto;
     rt::AccelKind accel = rt::AccelKind::kBvh;
-    std::string up = "y";        // a bare mesh's up axis (rt::LoadOptions)
+    std::string up = "y";  // a bare mesh's up axis (rt::LoadOptions)
     bool item_buffer = false;
     int threads = 0;
     rt::TraceOptions trace;
@@ -36,4 +36,4 @@ bool parse_command_line(int argc, char** argv, Options& options, int& exit_code)
 
 int run(const Options& options);
 
-}  // namespace rtrender
+}  // namespace rt::renderer

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-namespace rtrender {
+namespace rt::renderer {
 
 ProgressBar::ProgressBar(bool enabled)
     : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
@@ -41,7 +41,8 @@ PhaseLine::PhaseLine(bool enabled, std::string what) : what_(std::move(what)) {
             std::fprintf(stderr, "\r%s... %.1fs", what_.c_str(), elapsed);
             std::fflush(stderr);
             shown_ = true;
-        } while (!done_.wait_for(lock, std::chrono::milliseconds(500), [this] { return finished_; }));
+        } while (
+            !done_.wait_for(lock, std::chrono::milliseconds(500), [this] { return finished_; }));
     });
 }
 
@@ -56,4 +57,4 @@ PhaseLine::~PhaseLine() {
     if (shown_) std::fprintf(stderr, "\r\033[K");  // clear the line for what follows
 }
 
-}  // namespace rtrender
+}  // namespace rt::renderer

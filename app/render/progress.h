@@ -8,7 +8,7 @@
 #include <string>
 #include <thread>
 
-namespace rtrender {
+namespace rt::renderer {
 
 class ProgressBar {
   public:
@@ -42,4 +42,4 @@ class PhaseLine {
     std::thread ticker_;
 };
 
-}  // namespace rtrender
+}  // namespace rt::renderer

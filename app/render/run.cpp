@@ -21,7 +21,7 @@
 #include "core/renderer.h"
 #include "core/scene_loader.h"
 
-namespace rtrender {
+namespace rt::renderer {
 namespace {
 
 namespace fs = std::filesystem;
@@ -73,8 +73,7 @@ class Job {
 
 rt::gl::RasterRenderer& Job::raster() {
     if (!raster_) {
-        context_ =
-            rt::gl::create_headless_context(o_.gl, "rtrender");
+        context_ = rt::gl::create_headless_context(o_.gl, "rtrender");
         stats_["gl"] = context_->description();
         if (!o_.quiet) std::printf("OpenGL: %s\n", context_->description().c_str());
         raster_ = std::make_unique<rt::gl::RasterRenderer>(loaded_.scene);
@@ -198,7 +197,7 @@ int Job::run() {
     if (!rt::is_supported_output(main_output))
         throw rt::Error(main_output.string(), "-o", "unsupported format; use .png or .exr");
     std::optional<std::pair<int, int>> size;
-    if (!o_.size.empty() && !(size = rtapp::parse_size(o_.size)))
+    if (!o_.size.empty() && !(size = rt::app::parse_size(o_.size)))
         throw rt::Error("rtrender", "--size",
                         "expected WxH between 1x1 and 16384x16384, got \"" + o_.size + "\"");
 
@@ -253,4 +252,4 @@ int Job::run() {
 
 int run(const Options& options) { return Job(options).run(); }
 
-}  // namespace rtrender
+}  // namespace rt::renderer

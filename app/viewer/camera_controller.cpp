@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-namespace rtview {
+namespace rt::viewer {
 
 using rt::vec3;
 
@@ -76,4 +76,4 @@ rt::Camera CameraController::camera(int cols, int rows) const {
     return cam.resized(std::max(1, cols), std::max(1, rows));
 }
 
-}  // namespace rtview
+}  // namespace rt::viewer

@@ -7,7 +7,7 @@
 #include "core/aabb.h"
 #include "core/camera.h"
 
-namespace rtview {
+namespace rt::viewer {
 
 class CameraController {
   public:
@@ -38,4 +38,4 @@ class CameraController {
     std::uint64_t version_ = 0;
 };
 
-}  // namespace rtview
+}  // namespace rt::viewer

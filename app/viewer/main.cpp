@@ -15,7 +15,7 @@
 #include "core/scene_loader.h"
 
 int main(int argc, char** argv) {
-    rtview::ViewerOptions options;
+    rt::viewer::ViewerOptions options;
     options.scene = std::string(RTVIEW_ASSET_DIR) + "/scenes/whitted.json";
     std::string size, save_dir = ".";
     options.view = rt::gl::View::kSplit;
@@ -23,10 +23,12 @@ int main(int argc, char** argv) {
     app.add_option("scene", options.scene,
                    "Scene file (.json or .obj); default: the Whitted scene");
     app.add_option("--size", size, "Window size WxH (default 1280x720)");
-    app.add_option("--view", options.view, "First view")->transform(rt::app::cli_names(rtview::kViews));
+    app.add_option("--view", options.view, "First view")
+        ->transform(rt::app::cli_names(rt::viewer::kViews));
     app.add_option("--save-dir", save_dir, "Where F12 saves images (default: here)");
     app.add_option("--up", options.up, "A bare mesh's up axis: y (default), z, x, -y, -z or -x")
-        ->check(CLI::IsMember(std::vector<std::string>(std::begin(rt::kUpAxes), std::end(rt::kUpAxes))));
+        ->check(CLI::IsMember(
+            std::vector<std::string>(std::begin(rt::kUpAxes), std::end(rt::kUpAxes))));
     app.add_option("--accel", options.accel,
                    "Acceleration structure: bvh (wide, default), bvh2 (binary), grid or brute")
         ->transform(rt::app::cli_names(rt::kAccelNames));
@@ -38,7 +40,7 @@ int main(int argc, char** argv) {
         std::cerr << "rtview: command line: " << e.what() << " (see rtview --help)\n";
         return 1;
     }
-    const auto parsed = rtapp::parse_size(size, 64);
+    const auto parsed = rt::app::parse_size(size, 64);
     if (parsed) std::tie(options.width, options.height) = *parsed;
     if (!size.empty() && !parsed) {
         std::cerr << "rtview: --size: expected WxH between 64x64 and 16384x16384, got \"" << size
@@ -47,7 +49,7 @@ int main(int argc, char** argv) {
     }
     options.save_dir = save_dir;
     try {
-        rtview::Viewer viewer(options);
+        rt::viewer::Viewer viewer(options);
         return viewer.run();
     } catch (const rt::Error& e) {
         std::cerr << e.what() << '\n';

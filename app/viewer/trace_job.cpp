@@ -4,7 +4,7 @@
 
 #include "core/compare.h"
 
-namespace rtview {
+namespace rt::viewer {
 
 TraceJob::TraceJob() : thread_([this](std::stop_token stop) { loop(stop); }) {}
 
@@ -101,4 +101,4 @@ void TraceJob::run(const TraceRequest& request, std::stop_token cancel) {
     }
 }
 
-}  // namespace rtview
+}  // namespace rt::viewer

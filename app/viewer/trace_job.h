@@ -17,7 +17,7 @@
 #include "core/renderer.h"
 #include "core/scene.h"
 
-namespace rtview {
+namespace rt::viewer {
 
 struct TraceRequest {
     std::shared_ptr<const rt::Scene> scene;  // kept alive until the worker is done with it
@@ -68,4 +68,4 @@ class TraceJob {
     std::jthread thread_;  // last: starts after the members it uses
 };
 
-}  // namespace rtview
+}  // namespace rt::viewer

@@ -13,7 +13,7 @@
 #include "core/error.h"
 #include "core/scene_loader.h"
 
-namespace rtview {
+namespace rt::viewer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -40,7 +40,8 @@ std::shared_ptr<rt::Scene> read_scene(const std::string& path, rt::AccelKind acc
 
 Viewer::Viewer(const ViewerOptions& options)
     : options_(options),
-      first_scene_(read_scene(options.scene, options.accel, options.up)),  // a bad file fails before any window opens
+      first_scene_(read_scene(options.scene, options.accel,
+                              options.up)),  // a bad file fails before any window opens
       window_(options.width, options.height, "rtview"),
       view_(options.view) {
     GLFWwindow* w = window_.handle();
@@ -342,4 +343,4 @@ void Viewer::on_scroll(double dy) {
 
 void Viewer::on_drop(const std::string& path) { dropped_ = path; }
 
-}  // namespace rtview
+}  // namespace rt::viewer

@@ -17,7 +17,7 @@
 #include "app/viewer/camera_controller.h"
 #include "app/viewer/trace_job.h"
 
-namespace rtview {
+namespace rt::viewer {
 
 using rt::gl::View;
 
@@ -118,4 +118,4 @@ class Viewer {
     glm::dvec2 cursor_{0.0, 0.0};
 };
 
-}  // namespace rtview
+}  // namespace rt::viewer

@@ -10,7 +10,7 @@
 #include "core/compare.h"
 #include "core/scene_loader.h"
 
-namespace rtview {
+namespace rt::viewer {
 namespace {
 
 std::filesystem::path asset_dir() {
@@ -209,4 +209,4 @@ void Viewer::draw_help() {
     ImGui::End();
 }
 
-}  // namespace rtview
+}  // namespace rt::viewer

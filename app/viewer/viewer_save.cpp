@@ -6,7 +6,7 @@
 #include "app/viewer/viewer.h"
 #include "core/compare.h"
 
-namespace rtview {
+namespace rt::viewer {
 namespace {
 
 // The first free rtview-N prefix in `dir`.
@@ -56,4 +56,4 @@ void Viewer::save_view(int width, int height) {
     }
 }
 
-}  // namespace rtview
+}  // namespace rt::viewer

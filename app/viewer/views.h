@@ -7,7 +7,7 @@
 
 #include "app/gl/compositor.h"
 
-namespace rtview {
+namespace rt::viewer {
 
 struct ViewInfo {
     const char* name;
@@ -31,4 +31,4 @@ static_assert(views_in_key_order(), "kViews[i] is the view of key i + 1");
 
 inline const char* view_label(rt::gl::View v) { return kViews[static_cast<std::size_t>(v)].label; }
 
-}  // namespace rtview
+}  // namespace rt::viewer

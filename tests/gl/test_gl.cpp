@@ -9,10 +9,10 @@
 #include "app/gl/context.h"
 #include "app/gl/debug.h"
 #include "app/gl/framebuffer.h"
-#include "app/gl/program.h"
-#include "app/gl/texture.h"
 #include "app/gl/gl.h"
+#include "app/gl/program.h"
 #include "app/gl/raster_renderer.h"
+#include "app/gl/texture.h"
 #include "core/compare.h"
 #include "core/error.h"
 #include "core/renderer.h"
@@ -190,13 +190,14 @@ TEST_P(Gl, FailedConstructionsLeakNoGlNames) {
                  glIsRenderbuffer(id) + glIsBuffer(id) + glIsVertexArray(id);
         return n;
     };
-    const auto dir = test::temp_dir(std::string("leak_") +
-                                    (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
+    const auto dir =
+        test::temp_dir(std::string("leak_") + (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
     std::filesystem::copy_file(gl::shader_dir() / "raster.vert", dir / "raster.vert",
                                std::filesystem::copy_options::overwrite_existing);
     test::write_file(dir / "broken.frag", "#version 330 core\nvoid main() { syntax error }\n");
-    test::write_file(dir / "unlinked.frag",  // compiles, but calls what nothing defines
-                     "#version 330 core\nout vec4 c;\nvec4 nowhere();\nvoid main() { c = nowhere(); }\n");
+    test::write_file(
+        dir / "unlinked.frag",  // compiles, but calls what nothing defines
+        "#version 330 core\nout vec4 c;\nvec4 nowhere();\nvoid main() { c = nowhere(); }\n");
     const int before = live_names();
     for (int i = 0; i < 3; ++i) {
         EXPECT_THROW(gl::Program(dir / "raster.vert", dir / "broken.frag"), Error);
@@ -215,10 +216,11 @@ TEST_P(Gl, FailedConstructionsLeakNoGlNames) {
 // An OBJ of lines and points: the raster view draws them (in the material's diffuse
 // colour), the item buffer and the tracer see nothing there.
 TEST_P(Gl, LinesAndPointsAreDrawnByTheRasterOnly) {
-    const auto path = test::write_file(
-        test::temp_dir(std::string("wire_") + (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa")) /
-            "wire.obj",
-        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nl 1 2 4 3 1\np 1 4\n");
+    const auto path =
+        test::write_file(test::temp_dir(std::string("wire_") +
+                                        (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa")) /
+                             "wire.obj",
+                         "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nl 1 2 4 3 1\np 1 4\n");
     LoadedScene loaded = load_scene(path);
     Scene& scene = loaded.scene;
     scene.camera = scene.camera.resized(96, 72);
@@ -227,7 +229,7 @@ TEST_P(Gl, LinesAndPointsAreDrawnByTheRasterOnly) {
     const Image image = raster.render(scene.camera);
     int drawn = 0;
     for (const vec3& p : image.pixels) drawn += p != scene.background;
-    EXPECT_GT(drawn, 96);  // four edges across a good part of the frame
+    EXPECT_GT(drawn, 96);           // four edges across a good part of the frame
     EXPECT_LT(drawn, 96 * 72 / 4);  // lines, not a filled square
     const ItemBuffer ib = raster.render_item_buffer(scene.camera);
     for (std::uint32_t id : ib.object) EXPECT_EQ(id, ItemBuffer::kEmpty);

@@ -13,11 +13,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
@@ -68,7 +68,8 @@ EdgeCount count_with_edge_rule(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b,
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
                 const int nx = x + dx, ny = y + dy;
-                if (nx >= 0 && ny >= 0 && nx < w && ny < h && close(value, at(other, channels, nx, ny)))
+                if (nx >= 0 && ny >= 0 && nx < w && ny < h &&
+                    close(value, at(other, channels, nx, ny)))
                     return true;
             }
         return false;
@@ -160,7 +161,8 @@ int run_selftest(const fs::path& reference, float fail, double fail_percent, dou
     long long edges = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) edges += differs(x, y, 1);
-    const long long every = std::max(1LL, edges / std::max(1LL, static_cast<long long>(w) * h / 100));
+    const long long every =
+        std::max(1LL, edges / std::max(1LL, static_cast<long long>(w) * h / 100));
     std::vector<char> moved(static_cast<std::size_t>(w) * h, 0);
     long long seen = 0;
     for (int y = 0; y < h; ++y)
@@ -249,10 +251,11 @@ int run_compare(const std::string& name, const std::string& ref_name, const fs::
     std::cout << name << ": " << status << " against "
               << (best.reference.empty() ? "-" : best.reference.string()) << ": "
               << best.fail_percent << "% of pixels over " << fail << " (allowed " << fail_percent
-              << "%)" << (edge_percent >= 0.0 ? ", " + std::to_string(best.edge_percent) +
-                                                     "% at edges (allowed " +
-                                                     std::to_string(edge_percent) + "%)"
-                                               : std::string())
+              << "%)"
+              << (edge_percent >= 0.0
+                      ? ", " + std::to_string(best.edge_percent) + "% at edges (allowed " +
+                            std::to_string(edge_percent) + "%)"
+                      : std::string())
               << ", max error " << best.result.maxerror << ", mean " << best.result.meanerror
               << '\n';
     if (status != "passed")

@@ -242,8 +242,11 @@ TEST_P(GlassWinding, ObliqueRayFollowsSnellThroughASlab) {
     scene.meshes.push_back(box_mesh({-50, -1, -50}, {50, 0, 50}, GetParam()));
     scene.objects.push_back(Object{"slab", MeshRef{0, false}, 0, {}});
     const float x = 2.9772f, half = 0.03f;
-    scene.objects.push_back(Object{"band", Triangle{{x - half, -2.999f, -50}, {x + half, -2.999f, -50},
-                                                    {x, -2.999f, 50}}, 1, {}});
+    scene.objects.push_back(
+        Object{"band",
+               Triangle{{x - half, -2.999f, -50}, {x + half, -2.999f, -50}, {x, -2.999f, 50}},
+               1,
+               {}});
     scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -3}, 2, {}});
     scene.build();
     const float a = glm::radians(50.0f);
@@ -293,7 +296,8 @@ TEST(Refraction, GlassInGlassOfTheSameIndexIsInvisible) {
         scene.materials.push_back(test::plain(vec3(0.0f), vec3(1.0f)));
         scene.lights.push_back(Light{Light::Type::kPoint, {0.5f, 0.5f, -3.0f}, {}, vec3(1.0f)});
         scene.objects.push_back(Object{"outer", Sphere{{0, 0, 0}, 1.0f}, 0, {}});
-        if (inner) scene.objects.push_back(Object{"inner", Sphere{{0.3f, 0.2f, 0.1f}, 0.5f}, 0, {}});
+        if (inner)
+            scene.objects.push_back(Object{"inner", Sphere{{0.3f, 0.2f, 0.1f}, 0.5f}, 0, {}});
         scene.objects.push_back(Object{"wall", Plane{{0, 0, 1}, -4}, 1, {}});
         scene.build();
         return scene;
@@ -344,14 +348,14 @@ TEST(MediumStack, EntersLeavesAndNests) {
 // negative coordinates included, and defined far past where integers would overflow.
 TEST(Checker, CellsAlternateByTheSumOfTheirIndices) {
     const Checker c{vec3(1.0f), vec3(0.0f), 2.0f};
-    EXPECT_EQ(c.at({1, 1, 1}), c.colour_a);     // cell (0, 0, 0)
-    EXPECT_EQ(c.at({3, 1, 1}), c.colour_b);     // (1, 0, 0)
-    EXPECT_EQ(c.at({3, 3, 1}), c.colour_a);     // (1, 1, 0)
-    EXPECT_EQ(c.at({3, 3, 3}), c.colour_b);     // (1, 1, 1)
-    EXPECT_EQ(c.at({-1, 1, 1}), c.colour_b);    // (-1, 0, 0)
-    EXPECT_EQ(c.at({-1, -1, 1}), c.colour_a);   // (-1, -1, 0)
-    EXPECT_EQ(c.at({-3, 1, 1}), c.colour_a);    // (-2, 0, 0)
-    EXPECT_EQ(c.at({6e30f, 1, 1}), c.colour_a); // an even cell index: float holds no odd one there
+    EXPECT_EQ(c.at({1, 1, 1}), c.colour_a);      // cell (0, 0, 0)
+    EXPECT_EQ(c.at({3, 1, 1}), c.colour_b);      // (1, 0, 0)
+    EXPECT_EQ(c.at({3, 3, 1}), c.colour_a);      // (1, 1, 0)
+    EXPECT_EQ(c.at({3, 3, 3}), c.colour_b);      // (1, 1, 1)
+    EXPECT_EQ(c.at({-1, 1, 1}), c.colour_b);     // (-1, 0, 0)
+    EXPECT_EQ(c.at({-1, -1, 1}), c.colour_a);    // (-1, -1, 0)
+    EXPECT_EQ(c.at({-3, 1, 1}), c.colour_a);     // (-2, 0, 0)
+    EXPECT_EQ(c.at({6e30f, 1, 1}), c.colour_a);  // an even cell index: float holds no odd one there
     // A shift by whole periods (Checker::shift folds the origin into one) changes nothing.
     const vec3 shift = c.shift({4.0e7 + 3.0, 0.0, 0.0});
     EXPECT_NEAR(shift.x, 3.0f, 1e-6f);

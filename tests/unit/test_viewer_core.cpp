@@ -11,7 +11,7 @@
 #include "core/scene_loader.h"
 #include "test_util.h"
 
-namespace rtview {
+namespace rt::viewer {
 namespace {
 
 using rt::vec3;
@@ -185,4 +185,4 @@ TEST(TraceJob, ANewRequestReplacesTheRunningOne) {
 }
 
 }  // namespace
-}  // namespace rtview
+}  // namespace rt::viewer
