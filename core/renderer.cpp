@@ -1,4 +1,5 @@
 #include "core/renderer.h"
+#include "core/stopwatch.h"
 
 #include <algorithm>
 #include <atomic>
@@ -98,10 +99,6 @@ Hit primary_hit(const Scene& scene, const Ray& ray, const ItemBuffer* ib, int x,
     return hit;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats,
@@ -124,7 +121,7 @@ Image render(const Scene& scene, const Camera& camera, const RenderOptions& opti
     const int tiles = tile_count(width, height, tile_size);
     TileRunner runner(width, height, tile_size, threads, progress, 2 * tiles);
 
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch watch;
     bool complete = runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
         std::uint64_t fell = 0;
         for (int y = t.y0; y < t.y1; ++y) {
@@ -138,10 +135,10 @@ Image render(const Scene& scene, const Camera& camera, const RenderOptions& opti
         }
         fallbacks.fetch_add(fell, std::memory_order_relaxed);
     });
-    const double primary_seconds = seconds_since(start);
+    const double primary_seconds = watch.seconds();
 
     const Tracer tracer(scene, options.trace);
-    const auto shade_start = std::chrono::steady_clock::now();
+    const Stopwatch shade_watch;
     complete = complete && runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
         for (int y = t.y0; y < t.y1; ++y) {
             for (int x = t.x0; x < t.x1; ++x) {
@@ -160,8 +157,8 @@ Image render(const Scene& scene, const Camera& camera, const RenderOptions& opti
         stats->rays = counts;
         stats->threads = std::min(threads, tiles);
         stats->primary_seconds = primary_seconds;
-        stats->secondary_seconds = seconds_since(shade_start);
-        stats->seconds = seconds_since(start);
+        stats->secondary_seconds = shade_watch.seconds();
+        stats->seconds = watch.seconds();
         stats->nonfinite_pixels = nonfinite.load();
         stats->item_buffer_fallbacks = fallbacks.load();
         stats->cancelled = !complete;

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/scene_loader.h"
 #include "core/simd.h"
+#include "core/stopwatch.h"
 #include "core/tessellate.h"
 
 namespace rt::bench {
@@ -28,10 +29,9 @@ double time_build(Structure& s, const rt::TriangleMesh& mesh, int repeats) {
     std::vector<double> seconds;
     for (int k = 0; k < repeats; ++k) {
         s.prepare(mesh);
-        const auto start = std::chrono::steady_clock::now();
+        const rt::Stopwatch watch;
         s.build();
-        seconds.push_back(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        seconds.push_back(watch.seconds());
     }
     return median(seconds);
 }

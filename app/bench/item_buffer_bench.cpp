@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
+#include "core/stopwatch.h"
 
 namespace rt::bench {
 
@@ -31,10 +32,9 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
         without = rt::render(scene, options, &stats);
         if (k > 0)
             plain_frame.push_back(stats.seconds), plain_primary.push_back(stats.primary_seconds);
-        const auto start = std::chrono::steady_clock::now();
+        const rt::Stopwatch watch;
         ib = raster.render_item_buffer(scene.camera);
-        const double pass =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double pass = watch.seconds();
         with = rt::render(scene, options, &stats, {}, {}, &ib);
         if (k > 0) {
             ib_pass.push_back(pass);

@@ -1,4 +1,5 @@
 #include "app/bench/measure.h"
+#include "core/stopwatch.h"
 
 #include <chrono>
 #include <cmath>
@@ -39,10 +40,9 @@ SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
     std::vector<double> seconds;
     const int repeats = stride > 1 ? std::max(1, options.repeats / 2) : options.repeats;
     for (int k = 0; k < repeats; ++k) {
-        const auto start = std::chrono::steady_clock::now();
+        const rt::Stopwatch watch;
         pass();
-        seconds.push_back(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        seconds.push_back(watch.seconds());
     }
     if (faulty(s))
         for (std::size_t i = 0; i < answers.size(); i += 50) answers[i] = Result{};

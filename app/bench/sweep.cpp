@@ -10,6 +10,7 @@
 
 #include "app/bench/modes.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "core/tessellate.h"
 
 namespace rt::bench {
@@ -82,10 +83,9 @@ int run_sweep(const SweepOptions& o) {
         if (auto embree = make_embree(o.measure.threads)) structures.push_back(std::move(embree));
         for (auto& s : structures) {
             s->prepare(sphere);
-            const auto start = std::chrono::steady_clock::now();
+            const rt::Stopwatch watch;
             s->build();
-            const double build =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double build = watch.seconds();
             const double tests = static_cast<double>(primary.rays.size()) *
                                  static_cast<double>(sphere.triangles.size());
             const std::size_t stride =

@@ -1,17 +1,16 @@
 #include "app/render/progress.h"
+#include "core/stopwatch.h"
 
 #include <cstdio>
 #include <string>
 
 namespace rt::renderer {
 
-ProgressBar::ProgressBar(bool enabled)
-    : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+ProgressBar::ProgressBar(bool enabled) : enabled_(enabled) {}
 
 void ProgressBar::update(int done, int total) {
     if (!enabled_ || total <= 0) return;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed = watch_.seconds();
     if (!shown_ && elapsed < 1.0) return;
     const int percent = done * 100 / total;
     if (percent == last_percent_) return;
@@ -32,12 +31,11 @@ void ProgressBar::finish() {
 PhaseLine::PhaseLine(bool enabled, std::string what) : what_(std::move(what)) {
     if (!enabled) return;
     ticker_ = std::thread([this] {
-        const auto start = std::chrono::steady_clock::now();
+        const rt::Stopwatch watch;
         std::unique_lock lock(mutex_);
         if (done_.wait_for(lock, std::chrono::seconds(1), [this] { return finished_; })) return;
         do {
-            const double elapsed =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double elapsed = watch.seconds();
             std::fprintf(stderr, "\r%s... %.1fs", what_.c_str(), elapsed);
             std::fflush(stderr);
             shown_ = true;

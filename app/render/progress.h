@@ -2,11 +2,12 @@
 // A one-line progress bar on stderr, shown only on a terminal and only once the
 // render has taken more than a second (short renders stay quiet).
 
-#include <chrono>
 #include <condition_variable>
 #include <mutex>
 #include <string>
 #include <thread>
+
+#include "core/stopwatch.h"
 
 namespace rt::renderer {
 
@@ -20,7 +21,7 @@ class ProgressBar {
     bool enabled_;
     bool shown_ = false;
     int last_percent_ = -1;
-    std::chrono::steady_clock::time_point start_;
+    rt::Stopwatch watch_;
 };
 
 // A phase with no progress to count (loading a file, building the structures): past a

@@ -20,16 +20,12 @@
 #include "core/error.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
+#include "core/stopwatch.h"
 
 namespace rt::renderer {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // OUT.png, or for --mode both OUT.raster.png, OUT.trace.png and OUT.diff.png.
 fs::path output_path(const Options& o, const char* part = nullptr) {
@@ -108,12 +104,11 @@ rt::Image Job::trace() {
     std::optional<rt::ItemBuffer> ib;
     if (o_.item_buffer) {
         // The first pass pays for buffers and sphere meshes; the second is what a frame costs.
-        auto start = Clock::now();
+        rt::Stopwatch watch;
         ib = raster().render_item_buffer(loaded_.scene.camera);
-        stats_["item_buffer_cold_seconds"] = seconds_since(start);
-        start = Clock::now();
+        stats_["item_buffer_cold_seconds"] = watch.lap();
         ib = raster().render_item_buffer(loaded_.scene.camera);
-        stats_["item_buffer_seconds"] = seconds_since(start);
+        stats_["item_buffer_seconds"] = watch.seconds();
     }
     rt::Image image =
         render_traced(ib ? &*ib : nullptr, stats, ib ? "traced with item buffer" : "traced");
@@ -201,7 +196,7 @@ int Job::run() {
         throw rt::Error("rtrender", "--size",
                         "expected WxH between 1x1 and 16384x16384, got \"" + o_.size + "\"");
 
-    auto start = Clock::now();
+    rt::Stopwatch watch;
     const bool show_phases = !o_.quiet && isatty(STDERR_FILENO);
     {
         const PhaseLine phase(show_phases, "loading " + o_.scene);
@@ -211,14 +206,13 @@ int Job::run() {
         for (const std::string& w : loaded_.warnings) std::cerr << w << '\n';
     rt::Scene& scene = loaded_.scene;
     if (size) scene.camera = scene.camera.resized(size->first, size->second);
-    stats_["load_seconds"] = seconds_since(start);
+    stats_["load_seconds"] = watch.lap();
     stats_["origin"] = {loaded_.origin.x, loaded_.origin.y, loaded_.origin.z};
-    start = Clock::now();
     {
         const PhaseLine phase(show_phases, "building the acceleration structures");
         scene.build(o_.accel);
     }
-    stats_["build_seconds"] = seconds_since(start);
+    stats_["build_seconds"] = watch.lap();
     stats_["accel"] = rt::accel_name(o_.accel);
 
     if (o_.mode == Mode::kTrace) {
@@ -227,9 +221,9 @@ int Job::run() {
         write(rt::item_buffer_image(raster().render_item_buffer(scene.camera)), main_output, o_);
     } else {
         rt::gl::RasterRenderer& gl = raster();
-        start = Clock::now();
+        watch.restart();
         const rt::Image raster_image = gl.render(scene.camera);
-        stats_["raster_seconds"] = seconds_since(start);
+        stats_["raster_seconds"] = watch.seconds();
         if (o_.mode == Mode::kRaster) {
             write(raster_image, main_output, o_);
         } else {

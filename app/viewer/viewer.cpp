@@ -12,6 +12,7 @@
 #include "app/gl/debug.h"
 #include "core/error.h"
 #include "core/scene_loader.h"
+#include "core/stopwatch.h"
 
 namespace rt::viewer {
 namespace {
@@ -140,10 +141,10 @@ void Viewer::update_trace(Clock::time_point now) {
         request.levels = {4, 2, 1};
     }
     if (settings_.item_buffer) {
-        const auto start = Clock::now();
+        const rt::Stopwatch watch;
         request.item_buffer =
             std::make_shared<rt::ItemBuffer>(raster_->render_item_buffer(request.camera));
-        stats_.item_buffer_ms = 1e3 * std::chrono::duration<double>(Clock::now() - start).count();
+        stats_.item_buffer_ms = watch.milliseconds();
     }
     request.id = ++request_id_;
     tracer_.submit(std::move(request));
@@ -189,10 +190,10 @@ void Viewer::draw_views(int width, int height) {
     in.diff_scale = settings_.diff_scale;
     in.traced = traced_texture_.id();
     if (in.view != View::kTrace && in.view != View::kItemBuffer) {
-        const auto start = Clock::now();
+        const rt::Stopwatch watch;
         in.raster = raster_->render_to_texture(camera).texture();
         glFinish();  // so that the time is the GPU's too
-        stats_.raster_ms = 1e3 * std::chrono::duration<double>(Clock::now() - start).count();
+        stats_.raster_ms = watch.milliseconds();
     }
     if (in.view == View::kItemBuffer)
         in.item_buffer = raster_->render_item_buffer_to_texture(camera).texture();
