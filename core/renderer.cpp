@@ -1,13 +1,14 @@
 #include "core/renderer.h"
-#include "core/stopwatch.h"
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#include "core/compare.h"
+#include "core/stopwatch.h"
 
 namespace rt {
 
@@ -164,6 +165,10 @@ Image render(const Scene& scene, const Camera& camera, const RenderOptions& opti
         stats->cancelled = !complete;
     }
     return image;
+}
+
+std::uint64_t item_buffer_disagreements(const Image& with_item_buffer, const Image& from_scratch) {
+    return compare_images(with_item_buffer, from_scratch, 1.5 / 255.0).pixels_over;
 }
 
 }  // namespace rt

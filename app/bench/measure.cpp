@@ -1,9 +1,9 @@
 #include "app/bench/measure.h"
-#include "core/stopwatch.h"
 
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
+
+#include "core/stopwatch.h"
 
 namespace rt::bench {
 

@@ -1,8 +1,9 @@
 #include "app/render/progress.h"
-#include "core/stopwatch.h"
 
 #include <cstdio>
 #include <string>
+
+#include "core/stopwatch.h"
 
 namespace rt::renderer {
 

@@ -128,10 +128,10 @@ rt::Image Job::trace() {
     // The same frame without the item buffer: what it changes, and what it saves.
     rt::RenderStats reference;
     const rt::Image plain = render_traced(nullptr, reference, "traced without item buffer");
-    const rt::ImageDiff diff = rt::compare_images(image, plain, 1.5 / 255.0);
+    const std::uint64_t disagreements = rt::item_buffer_disagreements(image, plain);
     const double ib_seconds = stats_["item_buffer_seconds"].get<double>();
     const double saved = reference.primary_seconds - stats.primary_seconds - ib_seconds;
-    stats_["item_buffer_disagreements"] = diff.pixels_over;
+    stats_["item_buffer_disagreements"] = disagreements;
     stats_["item_buffer_fallbacks"] = stats.item_buffer_fallbacks;
     stats_["reference_primary_seconds"] = reference.primary_seconds;
     stats_["primary_seconds_saved"] = saved;
@@ -143,8 +143,8 @@ rt::Image Job::trace() {
             ib_seconds, stats.primary_seconds, reference.primary_seconds,
             saved >= 0 ? "saving" : "LOSS", std::abs(saved),
             static_cast<unsigned long long>(stats.item_buffer_fallbacks),
-            static_cast<unsigned long long>(diff.pixels_over), image.pixels.size(),
-            100.0 * diff.share_over);
+            static_cast<unsigned long long>(disagreements), image.pixels.size(),
+            100.0 * static_cast<double>(disagreements) / static_cast<double>(image.pixels.size()));
     return image;
 }
 

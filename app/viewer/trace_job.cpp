@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "core/compare.h"
-
 namespace rt::viewer {
 
 TraceJob::TraceJob() : thread_([this](std::stop_token stop) { loop(stop); }) {}
@@ -90,8 +88,7 @@ void TraceJob::run(const TraceRequest& request, std::stop_token cancel) {
                 rt::render(*request.scene, camera, request.options, &plain_stats, {}, cancel);
             if (plain_stats.cancelled) return;
             result.without_item_buffer = plain_stats;
-            result.item_buffer_disagreements =
-                rt::compare_images(result.image, plain, 1.5 / 255.0).pixels_over;
+            result.item_buffer_disagreements = rt::item_buffer_disagreements(result.image, plain);
         }
         std::lock_guard lock(mutex_);
         // A request submitted while this level rendered supersedes it (submit stops the
