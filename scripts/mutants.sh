@@ -89,6 +89,10 @@ mutant refinement-skips-levels app/viewer/trace_job.cpp \
 mutant superseded-result-kept app/viewer/trace_job.cpp \
     'result_.reset();  // an untaken result' '// an untaken result' \
     rt_viewer_tests tests/rt_viewer_tests --gtest_filter='TraceJob.*'
+mutant refinement-without-rest app/viewer/refinement.cpp \
+    'if (!refine_pending_ || now - last_change_ < kRestSeconds) return {};' \
+    'if (!refine_pending_) return {};' \
+    rt_viewer_tests tests/rt_viewer_tests --gtest_filter='RefinementSchedule.*'
 mutant gl-debug-not-installed app/gl/debug.cpp \
     'glDebugMessageCallback(on_debug_message, nullptr);' '(void)on_debug_message;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*ContextIsCoreProfile*'

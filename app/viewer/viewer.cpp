@@ -21,8 +21,6 @@ using Clock = std::chrono::steady_clock;
 
 Viewer* viewer_of(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
 
-constexpr double kRestSeconds = 0.2;  // the camera rests this long before full refinement
-
 }  // namespace
 
 namespace {
@@ -87,7 +85,7 @@ void Viewer::install(std::shared_ptr<rt::Scene> scene, const std::string& path) 
     scene_path_ = path;
     controller_ = std::make_unique<CameraController>(scene_->camera, scene_->bounds());
     compositor_->set_item_palette(scene_->objects.size());
-    submitted_camera_ = ~0ull;
+    schedule_.reset();
     traced_image_ = rt::Image(1, 1);
     traced_image_.pixels[0] = scene_->background;
     traced_texture_.upload(traced_image_);
@@ -106,12 +104,26 @@ rt::Camera Viewer::trace_camera() const {
     return controller_->camera(scaled(fb.x), scaled(fb.y));
 }
 
-// Any change of camera, settings or size restarts the tracer at a coarse level at once;
-// once the camera has rested, the chain up to full resolution follows.
-void Viewer::update_trace(Clock::time_point now) {
-    const glm::ivec2 fb = window_.framebuffer_size();
-    const bool changed = controller_->version() != submitted_camera_ ||
-                         !(settings_ == submitted_settings_) || fb != submitted_size_;
+TraceKey Viewer::trace_key() const {
+    const rt::Camera camera = trace_camera();
+    TraceKey key;
+    key.camera_version = controller_->version();
+    key.width = camera.cols;
+    key.height = camera.rows;
+    key.shadows = settings_.shadows;
+    key.reflections = settings_.reflections;
+    key.refractions = settings_.refractions;
+    key.max_depth = settings_.max_depth;
+    key.item_buffer = settings_.item_buffer;
+    key.threads = settings_.threads;
+    return key;
+}
+
+// The schedule (refinement.h) says when and at which levels; the item buffer is made
+// for chains that reach full resolution.
+void Viewer::update_trace() {
+    std::vector<int> levels = schedule_.update(trace_key(), clock_.seconds());
+    if (levels.empty()) return;
     TraceRequest request;
     request.scene = scene_;
     request.camera = trace_camera();
@@ -120,27 +132,8 @@ void Viewer::update_trace(Clock::time_point now) {
     request.options.trace.reflections = settings_.reflections;
     request.options.trace.refractions = settings_.refractions;
     request.options.trace.max_depth = settings_.max_depth;
-    if (changed) {
-        const bool first = submitted_camera_ == ~0ull;
-        submitted_camera_ = controller_->version();
-        submitted_settings_ = settings_;
-        submitted_size_ = fb;
-        last_change_ = now;
-        request.levels = first ? std::vector<int>{8, 4, 2, 1} : std::vector<int>{8};
-        refine_pending_ = !first;
-        if (!first) {
-            request.id = ++request_id_;
-            tracer_.submit(std::move(request));
-            return;
-        }
-    } else if (!refine_pending_ ||
-               std::chrono::duration<double>(now - last_change_).count() < kRestSeconds) {
-        return;
-    } else {
-        refine_pending_ = false;
-        request.levels = {4, 2, 1};
-    }
-    if (settings_.item_buffer) {
+    request.levels = std::move(levels);
+    if (settings_.item_buffer && request.levels.back() == 1) {
         const rt::Stopwatch watch;
         request.item_buffer =
             std::make_shared<rt::ItemBuffer>(raster_->render_item_buffer(request.camera));
@@ -215,7 +208,7 @@ void Viewer::frame(float dt) {
                            down(GLFW_KEY_W) - down(GLFW_KEY_S)};
         controller_->fly(fly, dt, down(GLFW_KEY_LEFT_SHIFT) + down(GLFW_KEY_RIGHT_SHIFT) > 0.0f);
     }
-    update_trace(Clock::now());
+    update_trace();
     collect_trace();
     draw_views(fb.x, fb.y);
     if (save_requested_) {

@@ -15,7 +15,9 @@
 #include "app/gl/texture.h"
 #include "app/gl/window.h"
 #include "app/viewer/camera_controller.h"
+#include "app/viewer/refinement.h"
 #include "app/viewer/trace_job.h"
+#include "core/stopwatch.h"
 
 namespace rt::viewer {
 
@@ -69,7 +71,8 @@ class Viewer {
                  const std::string& path);  // GL upload, camera, restart
     void cycle_scene(int step);             // PageDown / PageUp through assets/scenes
     void frame(float dt);
-    void update_trace(std::chrono::steady_clock::time_point now);
+    void update_trace();
+    TraceKey trace_key() const;
     void collect_trace();
     void draw_views(int width, int height);
     void draw_panel();
@@ -94,12 +97,9 @@ class Viewer {
     rt::Image traced_image_;  // what traced_texture_ holds
 
     Settings settings_;
-    Settings submitted_settings_;
-    std::uint64_t submitted_camera_ = ~0ull;
-    glm::ivec2 submitted_size_{0, 0};
+    RefinementSchedule schedule_;
+    rt::Stopwatch clock_;  // the viewer's time, for the schedule
     std::uint64_t request_id_ = 0;
-    bool refine_pending_ = false;
-    std::chrono::steady_clock::time_point last_change_;
     FrameStats stats_;
 
     View view_ = View::kSplit;

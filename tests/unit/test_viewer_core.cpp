@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/viewer/camera_controller.h"
+#include "app/viewer/refinement.h"
 #include "app/viewer/trace_job.h"
 #include "core/scene_loader.h"
 #include "test_util.h"
@@ -182,6 +183,33 @@ TEST(TraceJob, ANewRequestReplacesTheRunningOne) {
     ASSERT_TRUE(r);
     EXPECT_EQ(r->id, 2u);
     EXPECT_EQ(r->image.width, 64);
+}
+
+// The refinement schedule: the first image goes through every level; a change follows at
+// the coarsest level at once and again at each further change; full resolution waits
+// until nothing changed for the rest time; display-only settings are not in the key.
+TEST(RefinementSchedule, CoarseWhileChangingFullOnceAtRest) {
+    using V = std::vector<int>;
+    RefinementSchedule s;
+    TraceKey key;
+    key.width = 640;
+    key.height = 480;
+    EXPECT_EQ(s.update(key, 0.0), (V{8, 4, 2, 1}));
+    EXPECT_EQ(s.update(key, 0.05), V{});  // nothing changed: nothing to trace
+    key.camera_version = 1;               // an orbit step
+    EXPECT_EQ(s.update(key, 1.0), V{8});
+    key.camera_version = 2;
+    EXPECT_EQ(s.update(key, 1.1), V{8});
+    EXPECT_EQ(s.update(key, 1.1 + 0.5 * RefinementSchedule::kRestSeconds), V{});  // not rested
+    EXPECT_EQ(s.update(key, 1.11 + RefinementSchedule::kRestSeconds), (V{4, 2, 1}));
+    EXPECT_EQ(s.update(key, 5.0), V{});  // refined once, not again
+    key.max_depth = 2;                   // a trace setting
+    EXPECT_EQ(s.update(key, 6.0), V{8});
+    key.width = 320;  // the window (or the resolution scale)
+    EXPECT_EQ(s.update(key, 6.1), V{8});
+    EXPECT_EQ(s.update(key, 7.0), (V{4, 2, 1}));
+    s.reset();  // a new scene
+    EXPECT_EQ(s.update(key, 7.1), (V{8, 4, 2, 1}));
 }
 
 }  // namespace

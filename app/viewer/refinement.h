@@ -1,0 +1,44 @@
+#pragma once
+// When the viewer's tracer starts again, and at which resolutions (GL-free, unit-tested).
+// Any change of what the traced image depends on (a TraceKey) restarts it at once at the
+// coarsest level, so the view follows the camera; once nothing has changed for
+// kRestSeconds, the chain up to full resolution follows. The first image, and the first
+// after reset() (a new scene), goes through every level at once.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace rt::viewer {
+
+// What the traced image depends on. Display-only settings (the difference scale, the
+// split divider, the view) are not in it: changing them never restarts the tracer.
+struct TraceKey {
+    std::uint64_t camera_version = 0;  // CameraController::version()
+    int width = 0, height = 0;         // of the full-resolution traced image
+    bool shadows = true, reflections = true, refractions = true;
+    int max_depth = 5;
+    bool item_buffer = false;
+    int threads = 0;
+
+    bool operator==(const TraceKey&) const = default;
+};
+
+class RefinementSchedule {
+  public:
+    static constexpr double kRestSeconds = 0.2;  // the camera rests this long before refining
+    static constexpr int kCoarsest = 8;          // a fraction of the full resolution per side
+
+    // The levels to trace now (divisors of the full resolution, coarsest first: {8},
+    // {4, 2, 1} or {8, 4, 2, 1}), or none. `now` is in seconds on any steady clock.
+    std::vector<int> update(const TraceKey& key, double now);
+    // Forget what was traced: the next update starts the full chain.
+    void reset() { submitted_.reset(); }
+
+  private:
+    std::optional<TraceKey> submitted_;
+    bool refine_pending_ = false;
+    double last_change_ = 0.0;
+};
+
+}  // namespace rt::viewer
