@@ -34,6 +34,9 @@ struct Result {  // of one ray
     bool hit() const { return t < rt::kInfinity; }
 };
 
+// One ray through each pixel's centre, row by row: the primary rays every mode traces.
+RaySet primary_rays(const rt::Camera& camera);
+
 // Coherent primary rays from `camera`; shadow feelers from their hits to every light;
 // incoherent secondary rays, cosine-distributed about the hit normals (seeded, so every
 // run and every structure gets the same rays).

@@ -47,19 +47,24 @@ vec3 cosine_direction(const vec3& n, std::uint32_t index) {
 
 }  // namespace
 
+RaySet primary_rays(const rt::Camera& camera) {
+    RaySet set{"primary", {}, {}, false};
+    for (int y = 0; y < camera.rows; ++y)
+        for (int x = 0; x < camera.cols; ++x) {
+            set.rays.push_back(camera.ray(x, y));
+            set.t_max.push_back(rt::kInfinity);
+        }
+    return set;
+}
+
 std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMesh& mesh,
                                   const std::vector<rt::Light>& lights,
                                   const std::vector<Result>& primary_hits) {
     std::vector<RaySet> sets(3);
-    sets[0].name = "primary";
+    sets[0] = primary_rays(camera);
     sets[1].name = "shadow";
     sets[1].occlusion = true;
     sets[2].name = "secondary";
-    for (int y = 0; y < camera.rows; ++y)
-        for (int x = 0; x < camera.cols; ++x) {
-            sets[0].rays.push_back(camera.ray(x, y));
-            sets[0].t_max.push_back(rt::kInfinity);
-        }
     for (std::size_t i = 0; i < primary_hits.size(); ++i) {
         const Result& h = primary_hits[i];
         if (!h.hit()) continue;

@@ -36,16 +36,6 @@ double time_build(Structure& s, const rt::TriangleMesh& mesh, int repeats) {
     return median(seconds);
 }
 
-RaySet primary_rays(const rt::Camera& camera) {
-    RaySet set{"primary", {}, {}, false};
-    for (int y = 0; y < camera.rows; ++y)
-        for (int x = 0; x < camera.cols; ++x) {
-            set.rays.push_back(camera.ray(x, y));
-            set.t_max.push_back(rt::kInfinity);
-        }
-    return set;
-}
-
 // Each structure against the reference: Embree on every ray if there is one, and brute
 // force on the rays brute force traced. A mismatch beyond a handful of edge cases fails.
 bool check(const std::vector<Entry>& entries, const std::vector<RaySet>& sets,

@@ -70,12 +70,7 @@ int run_sweep(const SweepOptions& o) {
         const rt::TriangleMesh sphere = rt::tessellate_unit_sphere(slices_for(wanted));
         const rt::Camera camera =
             rt::Camera::look_at({0.3f, 0.4f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 45.0f, o.width, o.height);
-        RaySet primary{"primary", {}, {}, false};
-        for (int y = 0; y < camera.rows; ++y)
-            for (int x = 0; x < camera.cols; ++x) {
-                primary.rays.push_back(camera.ray(x, y));
-                primary.t_max.push_back(rt::kInfinity);
-            }
+        const RaySet primary = primary_rays(camera);
         std::vector<std::unique_ptr<Structure>> structures;
         for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2,
                                 rt::AccelKind::kBvh})
