@@ -93,6 +93,12 @@ mutant refinement-without-rest app/viewer/refinement.cpp \
     'if (!refine_pending_ || now - last_change_ < kRestSeconds) return {};' \
     'if (!refine_pending_) return {};' \
     rt_viewer_tests tests/rt_viewer_tests --gtest_filter='RefinementSchedule.*'
+mutant orbit-about-the-tilted-view-up app/viewer/camera_controller.cpp \
+    'frame_v_ = nearest_axis(home_.v);' 'frame_v_ = home_.v;' \
+    rt_viewer_tests tests/rt_viewer_tests --gtest_filter='CameraController.*'
+mutant near-plane-ignores-planes app/gl/gpu_scene.cpp \
+    'nearest = std::min(nearest, plane_distance(*p, o, camera.eye));' '(void)p;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*Skimming*'
 mutant gl-debug-not-installed app/gl/debug.cpp \
     'glDebugMessageCallback(on_debug_message, nullptr);' '(void)on_debug_message;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*ContextIsCoreProfile*'

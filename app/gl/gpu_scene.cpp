@@ -107,6 +107,18 @@ float GpuScene::plane_extent(const Camera& camera) const {
     return 1000.0f * std::max({radius, glm::length(camera.eye - centre), 1e-3f});
 }
 
+namespace {
+
+// The distance from `eye` to the plane of object `o`, in world space.
+float plane_distance(const Plane& p, const Object& o, const glm::vec3& eye) {
+    if (!o.transform) return std::fabs(glm::dot(eye, p.normal) - p.offset);
+    const glm::vec3 point = o.transform->point_to_world(p.offset * p.normal);
+    const glm::vec3 normal = o.transform->normal_to_world(p.normal);
+    return std::fabs(glm::dot(eye - point, normal));
+}
+
+}  // namespace
+
 DepthRange GpuScene::depth_range(const Camera& camera) const {
     DepthRange range;
     range.far_plane = 3.0f * plane_extent(camera);
@@ -115,6 +127,11 @@ DepthRange GpuScene::depth_range(const Camera& camera) const {
     if (!bounds_.empty())
         nearest = glm::length(
             glm::max(glm::max(bounds_.lo - camera.eye, camera.eye - bounds_.hi), glm::vec3(0.0f)));
+    // Planes are unbounded: the eye's distance to each (a camera skimming the floor, or
+    // under it, must not have the floor clipped at the near plane while the tracer sees it).
+    for (const Object& o : scene_.objects)
+        if (const auto* p = std::get_if<Plane>(&o.shape))
+            nearest = std::min(nearest, plane_distance(*p, o, camera.eye));
     const float closest_allowed = std::min(range.far_plane * 1e-6f, camera.N);
     range.near_plane = std::clamp(0.5f * nearest, closest_allowed, camera.N);
     return range;

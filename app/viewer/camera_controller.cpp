@@ -16,14 +16,46 @@ CameraController::CameraController(const rt::Camera& home, const rt::Aabb& bound
     reset();
 }
 
+namespace {
+
+// The world axis (+-x, +-y, +-z) nearest to v: a scene's up.
+vec3 nearest_axis(const vec3& v) {
+    int best = 0;
+    for (int a = 1; a < 3; ++a)
+        if (std::fabs(v[a]) > std::fabs(v[best])) best = a;
+    vec3 axis(0.0f);
+    axis[best] = v[best] < 0.0f ? -1.0f : 1.0f;
+    return axis;
+}
+
+// u and v of a camera looking along -n with `up` as its up, turned by `roll` about n.
+void frame_for(const vec3& n, const vec3& up, float roll, const vec3& fallback_u, vec3& u,
+               vec3& v) {
+    vec3 level = glm::cross(up, n);
+    level = glm::length(level) < 1e-6f ? fallback_u : glm::normalize(level);
+    const vec3 level_v = glm::cross(n, level);
+    u = std::cos(roll) * level + std::sin(roll) * level_v;
+    v = glm::cross(n, u);
+}
+
+}  // namespace
+
 void CameraController::reset() {
-    frame_u_ = home_.u;
-    frame_v_ = home_.v;
-    frame_n_ = home_.n;
     // Orbit about the point straight ahead at the depth of the scene's middle.
     distance_ = std::max(glm::dot(scene_centre_ - home_.eye, -home_.n), 0.1f * scene_size_);
-    yaw_ = pitch_ = 0.0f;
     target_ = home_.eye - distance_ * home_.n;
+    frame_v_ = nearest_axis(home_.v);
+    const float elevation = glm::dot(home_.n, frame_v_);  // sin of the eye's pitch
+    const vec3 horizontal = home_.n - elevation * frame_v_;
+    frame_n_ = glm::length(horizontal) > 1e-6f ? glm::normalize(horizontal)
+                                               : glm::normalize(glm::cross(home_.u, frame_v_));
+    frame_u_ = glm::cross(frame_v_, frame_n_);
+    yaw_ = 0.0f;
+    pitch_ = std::asin(std::clamp(elevation, -1.0f, 1.0f));  // orbit() clamps it
+    // The home camera's roll: the angle from the level u (no roll) to its own u, about n.
+    vec3 level_u, level_v;
+    frame_for(home_.n, frame_v_, 0.0f, frame_u_, level_u, level_v);
+    roll_ = std::atan2(glm::dot(home_.u, level_v), glm::dot(home_.u, level_u));
     ++version_;
 }
 
@@ -37,7 +69,6 @@ vec3 CameraController::eye() const { return target_ + offset(); }
 
 void CameraController::orbit(float dx_pixels, float dy_pixels) {
     constexpr float kRadiansPerPixel = 0.006f;
-    constexpr float kMaxPitch = 1.55f;  // just short of straight up or down
     yaw_ -= dx_pixels * kRadiansPerPixel;
     pitch_ = std::clamp(pitch_ + dy_pixels * kRadiansPerPixel, -kMaxPitch, kMaxPitch);
     ++version_;
@@ -69,10 +100,7 @@ rt::Camera CameraController::camera(int cols, int rows) const {
     rt::Camera cam = home_;
     cam.eye = eye();
     cam.n = glm::normalize(offset());
-    vec3 u = glm::cross(frame_v_, cam.n);
-    if (glm::length(u) < 1e-6f) u = frame_u_;  // looking along the up axis
-    cam.u = glm::normalize(u);
-    cam.v = glm::cross(cam.n, cam.u);
+    frame_for(cam.n, frame_v_, roll_, frame_u_, cam.u, cam.v);
     return cam.resized(std::max(1, cols), std::max(1, rows));
 }
 

@@ -105,6 +105,25 @@ TEST_P(Gl, RasterEqualsLocalTracingAwayFromSilhouettes) {
     }
 }
 
+// A camera skimming the floor, just above it or just under it (an orbit can take it
+// there): the floor is nearer than any object, and the raster must not clip it at the
+// near plane while the tracer draws it. With the near plane chosen from the objects alone,
+// the lower rows of the raster image were background.
+TEST_P(Gl, ACameraSkimmingTheFloorSeesItInBothPipelines) {
+    for (const float height : {0.05f, -0.05f}) {
+        Scene scene = load("whitted.json", 160, 120);
+        scene.camera = Camera::look_at({0.3f, height, 4.5f}, {0.0f, height - 0.4f, 0.0f}, {0, 1, 0},
+                                       38.0f, 160, 120);
+        gl::RasterRenderer raster(scene);
+        const Image r = raster.render(scene.camera);
+        RenderOptions options;
+        options.trace.shadows = options.trace.reflections = options.trace.refractions = false;
+        const Image t = render(scene, options);
+        const ImageDiff d = compare_images(r, t);
+        EXPECT_LT(d.share_over, 0.03) << "camera at height " << height << ": silhouettes only";
+    }
+}
+
 TEST_P(Gl, ItemBufferNamesTheObjectAtEachPixel) {
     const Scene scene = load("tutorial.json", 120, 90);
     gl::RasterRenderer raster(scene);

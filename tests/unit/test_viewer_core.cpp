@@ -1,10 +1,12 @@
 // The viewer's GL-free parts: the camera controller and the progressive trace job.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "app/viewer/camera_controller.h"
 #include "app/viewer/refinement.h"
@@ -51,6 +53,58 @@ TEST(CameraController, PitchStopsShortOfThePoles) {
     const rt::Camera cam = c.camera(64, 64);
     EXPECT_TRUE(std::isfinite(cam.u.x) && std::isfinite(cam.v.y) && std::isfinite(cam.n.z));
     EXPECT_LT(std::fabs(glm::dot(cam.n, vec3(0, 1, 0))), 1.0f);
+}
+
+// The pitch stops 86 degrees above or below the horizon, however far the drag goes.
+TEST(CameraController, PitchStopsAtItsLimitBothWays) {
+    for (const float drag : {100000.0f, -100000.0f}) {
+        CameraController c(home(), unit_box());
+        c.orbit(0.0f, drag);
+        const rt::Camera cam = c.camera(64, 64);
+        EXPECT_NEAR(std::fabs(glm::dot(cam.n, vec3(0, 1, 0))),
+                    std::sin(CameraController::kMaxPitch), 1e-4f);
+    }
+}
+
+// Orbit is a turntable about the scene's up: from a camera looking down at 30 degrees, a
+// purely horizontal drag keeps the horizon level (u stays horizontal) and the elevation
+// as it was; the old orbit about the home camera's tilted v rolled it by about 3 degrees
+// per 50 pixels.
+TEST(CameraController, HorizontalOrbitNeverRollsTheHorizon) {
+    const rt::Camera tilted =
+        rt::Camera::look_at({0, 4, 6.93f}, {0, 0, 0}, {0, 1, 0}, 40.0f, 640, 480);
+    CameraController c(tilted, unit_box());
+    const float elevation = glm::dot(c.camera(640, 480).n, vec3(0, 1, 0));
+    for (int step = 0; step < 40; ++step) {
+        c.orbit(50.0f, 0.0f);
+        const rt::Camera cam = c.camera(640, 480);
+        ASSERT_NEAR(glm::dot(cam.u, vec3(0, 1, 0)), 0.0f, 1e-5f)
+            << "after " << step + 1 << " drags";
+        EXPECT_GT(glm::dot(cam.v, vec3(0, 1, 0)), 0.0f);
+        EXPECT_NEAR(glm::dot(cam.n, vec3(0, 1, 0)), elevation, 1e-5f);
+    }
+    // A z-up scene turns about z.
+    const rt::Camera z_up = rt::Camera::look_at({6, -6, 4}, {0, 0, 0}, {0, 0, 1}, 40.0f, 64, 48);
+    CameraController cz(z_up, unit_box());
+    cz.orbit(120.0f, 30.0f);
+    EXPECT_NEAR(glm::dot(cz.camera(64, 48).u, vec3(0, 0, 1)), 0.0f, 1e-5f);
+}
+
+// A home camera with a roll of its own (a u, v, n frame) starts as it is and keeps that
+// roll while orbiting.
+TEST(CameraController, AHomeRollIsKept) {
+    const float roll = glm::radians(20.0f);
+    rt::Camera rolled = home();
+    const vec3 u = rolled.u, v = rolled.v;
+    rolled.u = std::cos(roll) * u + std::sin(roll) * v;
+    rolled.v = glm::cross(rolled.n, rolled.u);
+    CameraController c(rolled, unit_box());
+    expect_vec(c.camera(640, 480).u, rolled.u);
+    expect_vec(c.camera(640, 480).v, rolled.v);
+    c.orbit(200.0f, -40.0f);
+    const rt::Camera cam = c.camera(640, 480);
+    const vec3 level = glm::normalize(glm::cross(vec3(0, 1, 0), cam.n));
+    EXPECT_NEAR(std::acos(std::clamp(glm::dot(cam.u, level), -1.0f, 1.0f)), roll, 1e-4f);
 }
 
 TEST(CameraController, ZoomPanFlyAndReset) {
