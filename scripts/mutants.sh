@@ -99,6 +99,13 @@ mutant orbit-about-the-tilted-view-up app/viewer/camera_controller.cpp \
 mutant near-plane-ignores-planes app/gl/gpu_scene.cpp \
     'nearest = std::min(nearest, plane_distance(*p, o, camera.eye));' '(void)p;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*Skimming*'
+mutant keys-reach-imgui-focus app/viewer/viewer.cpp \
+    'if (editing || is_modifier(key) || action == GLFW_RELEASE)
+        rt::gl::Window::forward_key(window_.handle(), key, scancode, action, mods);
+    if (editing) return;' \
+    'rt::gl::Window::forward_key(window_.handle(), key, scancode, action, mods);
+    if (ImGui::GetIO().WantCaptureKeyboard) return;' \
+    rtview ctest -R '^gui[.]' --output-on-failure
 mutant gl-debug-not-installed app/gl/debug.cpp \
     'glDebugMessageCallback(on_debug_message, nullptr);' '(void)on_debug_message;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*ContextIsCoreProfile*'

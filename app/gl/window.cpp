@@ -80,9 +80,24 @@ void Window::init_imgui() {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's directory
     ImGui::StyleColorsDark();
-    ImGui_ImplGlfw_InitForOpenGL(window_, /*install_callbacks=*/true);
+    ImGui_ImplGlfw_InitForOpenGL(window_, /*install_callbacks=*/false);
+    glfwSetWindowFocusCallback(window_, ImGui_ImplGlfw_WindowFocusCallback);
+    glfwSetCursorEnterCallback(window_, ImGui_ImplGlfw_CursorEnterCallback);
     ImGui_ImplOpenGL3_Init("#version 330 core");
     imgui_ = true;
+}
+
+void Window::forward_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+}
+void Window::forward_char(GLFWwindow* window, unsigned int c) {
+    ImGui_ImplGlfw_CharCallback(window, c);
+}
+void Window::forward_mouse_button(GLFWwindow* window, int button, int action, int mods) {
+    ImGui_ImplGlfw_MouseButtonCallback(window, button, action, mods);
+}
+void Window::forward_scroll(GLFWwindow* window, double dx, double dy) {
+    ImGui_ImplGlfw_ScrollCallback(window, dx, dy);
 }
 
 void Window::begin_imgui_frame() {

@@ -24,9 +24,14 @@ class Window {
     void set_title(const std::string& title);
     bool should_close() const;
 
-    // Dear ImGui frames; install after the application's own GLFW callbacks, which
-    // ImGui's back-end then chains to.
+    // Dear ImGui on this window. Its GLFW callbacks are not installed: the application's
+    // own callbacks decide which events reach ImGui (forward_* below), so that keys that
+    // are the application's never reach ImGui's focus and text editing.
     void init_imgui();
+    static void forward_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+    static void forward_char(GLFWwindow* window, unsigned int c);
+    static void forward_mouse_button(GLFWwindow* window, int button, int action, int mods);
+    static void forward_scroll(GLFWwindow* window, double dx, double dy);
     void begin_imgui_frame();
     void end_imgui_frame();  // renders ImGui's draw data
     void swap_buffers();

@@ -8,6 +8,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ClosePopupToLevel: Esc closes an open drop-down
 
 #include "app/gl/debug.h"
 #include "core/error.h"
@@ -45,20 +46,28 @@ Viewer::Viewer(const ViewerOptions& options)
       view_(options.view) {
     GLFWwindow* w = window_.handle();
     glfwSetWindowUserPointer(w, this);
-    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
-        viewer_of(win)->on_key(key, action, mods);
+    // Every event comes here first; what ImGui gets is decided in on_key and below.
+    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int scancode, int action, int mods) {
+        viewer_of(win)->on_key(key, scancode, action, mods);
     });
-    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
+    glfwSetCharCallback(w, [](GLFWwindow* win, unsigned int c) {
+        // Characters are text only while a text field is being edited.
+        if (ImGui::GetIO().WantTextInput) rt::gl::Window::forward_char(win, c);
+    });
+    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int mods) {
+        rt::gl::Window::forward_mouse_button(win, button, action, mods);
         viewer_of(win)->on_mouse_button(button, action);
     });
     glfwSetCursorPosCallback(
         w, [](GLFWwindow* win, double x, double y) { viewer_of(win)->on_cursor(x, y); });
-    glfwSetScrollCallback(
-        w, [](GLFWwindow* win, double, double dy) { viewer_of(win)->on_scroll(dy); });
+    glfwSetScrollCallback(w, [](GLFWwindow* win, double dx, double dy) {
+        rt::gl::Window::forward_scroll(win, dx, dy);
+        viewer_of(win)->on_scroll(dy);
+    });
     glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
         if (count > 0) viewer_of(win)->on_drop(paths[0]);
     });
-    window_.init_imgui();  // after ours: ImGui's callbacks chain to them
+    window_.init_imgui();
     compositor_ = std::make_unique<rt::gl::Compositor>();
     std::printf("OpenGL: %s\n", window_.description().c_str());
     install(std::move(first_scene_), options.scene);
@@ -259,8 +268,27 @@ void Viewer::update_title() {
     title_ = title;
 }
 
-void Viewer::on_key(int key, int action, int mods) {
-    if (ImGui::GetIO().WantCaptureKeyboard) return;
+namespace {
+
+bool is_modifier(int key) {
+    return key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT ||
+           key == GLFW_KEY_LEFT_CONTROL || key == GLFW_KEY_RIGHT_CONTROL ||
+           key == GLFW_KEY_LEFT_ALT || key == GLFW_KEY_RIGHT_ALT || key == GLFW_KEY_LEFT_SUPER ||
+           key == GLFW_KEY_RIGHT_SUPER;
+}
+
+}  // namespace
+
+// Keys are the viewer's, except while a text field is being edited (a click in one, or
+// Ctrl+click on a slider): then every key is ImGui's. ImGui always learns the modifiers
+// (Ctrl+click needs them) and every release, so no key stays down in it; Tab and the
+// others never reach its focus and tabbing, which used to turn a slider into a text
+// field that the next digit typed into.
+void Viewer::on_key(int key, int scancode, int action, int mods) {
+    const bool editing = ImGui::GetIO().WantTextInput;
+    if (editing || is_modifier(key) || action == GLFW_RELEASE)
+        rt::gl::Window::forward_key(window_.handle(), key, scancode, action, mods);
+    if (editing) return;
     if (key == GLFW_KEY_TAB && (action == GLFW_PRESS || action == GLFW_RELEASE)) {
         flicker_ = action == GLFW_PRESS;
         std::printf("flicker: %s\n", flicker_ ? "on" : "off");
@@ -296,11 +324,37 @@ void Viewer::on_key(int key, int action, int mods) {
             cycle_scene(key == GLFW_KEY_PAGE_DOWN ? 1 : -1);
             break;
         case GLFW_KEY_ESCAPE:
-            help_ ? void(help_ = false) : glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE);
+            on_escape();
+            break;
+        case GLFW_KEY_Q:
+            if (mods & GLFW_MOD_CONTROL) quit("Ctrl+Q");
             break;
         default:
             break;
     }
+}
+
+// Esc closes what is open (the help, a drop-down); with nothing open it asks, and a
+// second Esc within kQuitSeconds quits: one keystroke never loses the camera and settings.
+void Viewer::on_escape() {
+    if (help_) {
+        help_ = false;
+    } else if (ImGui::IsPopupOpen(nullptr,
+                                  ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) {
+        ImGui::ClosePopupToLevel(0, true);
+    } else if (quit_asked_ && quit_asked_->seconds() < kQuitSeconds) {
+        quit("Esc Esc");
+    } else {
+        quit_asked_.emplace();
+        std::printf("Esc: press Esc again to quit\n");
+        std::fflush(stdout);
+    }
+}
+
+void Viewer::quit(const char* how) {
+    std::printf("quit: %s\n", how);
+    std::fflush(stdout);
+    glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE);
 }
 
 void Viewer::on_mouse_button(int button, int action) {

@@ -59,13 +59,16 @@ class Viewer {
     int run();
 
     // GLFW input, forwarded by the static callbacks.
-    void on_key(int key, int action, int mods);
+    void on_key(int key, int scancode, int action, int mods);
     void on_mouse_button(int button, int action);
     void on_cursor(double x, double y);
     void on_scroll(double dy);
     void on_drop(const std::string& path);
 
   private:
+    static constexpr double kQuitSeconds = 2.0;  // the second Esc within this quits
+    void on_escape();
+    void quit(const char* how);
     bool load(const std::string& path);  // on failure: false, error_ set, current scene kept
     void install(std::shared_ptr<rt::Scene> scene,
                  const std::string& path);  // GL upload, camera, restart
@@ -106,6 +109,7 @@ class Viewer {
     float divider_ = 0.5f;
     bool swap_ = false;
     bool help_ = false;
+    std::optional<rt::Stopwatch> quit_asked_;  // since the first Esc
     bool panel_ = true;
     bool flicker_ = false;
     bool save_requested_ = false;

@@ -149,6 +149,9 @@ void Viewer::draw_overlays(int width, int height) {
     const float scale =
         static_cast<float>(ImGui::GetIO().DisplaySize.x) / static_cast<float>(std::max(1, width));
     const float w = static_cast<float>(width) * scale, h = static_cast<float>(height) * scale;
+    if (quit_asked_ && quit_asked_->seconds() < kQuitSeconds)
+        label(ImGui::GetForegroundDrawList(), ImVec2(w * 0.5f - 150.0f, h * 0.5f),
+              "Press Esc again to quit (Ctrl+Q quits at once)");
     const View view = shown_view();
     if (view == View::kSplit) {
         const float x = divider_ * w;
@@ -196,7 +199,8 @@ void Viewer::draw_help() {
                              {"PageDown, PageUp", "next, previous scene in assets/scenes"},
                              {"F12 or P", "save the view (and raster, traced, difference)"},
                              {"F1 or ?", "this help"},
-                             {"Esc", "close help, or quit"}};
+                             {"Esc", "close the help or a drop-down; twice: quit"},
+                             {"Ctrl+Q", "quit"}};
     if (ImGui::BeginTable("keys", 2)) {
         for (const auto& row : rows) {
             ImGui::TableNextColumn();

@@ -144,12 +144,26 @@ for _ in 1 2 3 4 5; do after "^scene:\|radius: must be > 0" key Next; done  # on
 check "a broken scene at run time is reported" test "$(log_count "radius: must be > 0")" -gt "$errors"
 check "  ... and the viewer keeps running" kill -0 "$app_pid"
 
+# With the panel focused by a click, Tab then a digit: the digit switches the view; it is
+# never typed into a slider that Tab focused (it used to go into the threads slider).
+after "^traced:" click $SHADOWS  # (the panel is shown) ImGui's focus is on it; shadows back on
+xdotool keydown Tab; sleep 1.5; after "^flicker: off" xdotool keyup Tab  # held: it repeats
+splits=$(log_count "^view: split")
+key 3
+wait_for_log "^view: split" $((splits + 1)) 5
+check "Tab then 3 with the panel focused: the view changes" test "$(log_count "^view: split")" -gt "$splits"
+after "^view: raster" key 1
+
+# One Esc asks; a second within two seconds quits.
+after "^Esc: press Esc again" key Escape
+sleep 0.5
+check "one Esc does not quit" kill -0 "$app_pid"
 key Escape
 for _ in $(seq 50); do kill -0 "$app_pid" 2>/dev/null || break; sleep 0.1; done
 status=0
 if kill -0 "$app_pid" 2>/dev/null; then status=124; else wait "$app_pid" || status=$?; fi
 app_pid=""
-check "Esc quits with status 0" test "$status" -eq 0
+check "a second Esc quits with status 0" test "$status" -eq 0
 
 # Without a display, or with a bad scene: one line, status 1.
 out=$(env -u DISPLAY -u WAYLAND_DISPLAY "$rtview" "$scene" 2>&1); status=$?
