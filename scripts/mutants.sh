@@ -106,6 +106,12 @@ mutant keys-reach-imgui-focus app/viewer/viewer.cpp \
     'rt::gl::Window::forward_key(window_.handle(), key, scancode, action, mods);
     if (ImGui::GetIO().WantCaptureKeyboard) return;' \
     rtview ctest -R '^gui[.]' --output-on-failure
+mutant typed-slider-values-unclamped app/viewer/viewer_panel.cpp \
+    'constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;' \
+    'constexpr ImGuiSliderFlags kClamp = 0;' rtview ctest -R '^gui[.]' --output-on-failure
+mutant panel-left-off-screen app/viewer/viewer_panel.cpp \
+    '    keep_panel_inside();
+' '' rtview ctest -R '^gui[.]' --output-on-failure
 mutant gl-debug-not-installed app/gl/debug.cpp \
     'glDebugMessageCallback(on_debug_message, nullptr);' '(void)on_debug_message;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*ContextIsCoreProfile*'

@@ -1,5 +1,6 @@
 #include "app/gl/window.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "app/gl/context.h"
@@ -87,8 +88,14 @@ void Window::init_imgui() {
     imgui_ = true;
 }
 
-void Window::forward_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
-    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+void Window::forward_key(int key, int scancode, int action, int mods) {
+    const auto seen = std::find(pressed_this_frame_.begin(), pressed_this_frame_.end(), key);
+    if (action == GLFW_RELEASE && seen != pressed_this_frame_.end()) {
+        held_releases_.push_back({key, scancode, action, mods});
+        return;
+    }
+    if (action == GLFW_PRESS) pressed_this_frame_.push_back(key);
+    ImGui_ImplGlfw_KeyCallback(window_, key, scancode, action, mods);
 }
 void Window::forward_char(GLFWwindow* window, unsigned int c) {
     ImGui_ImplGlfw_CharCallback(window, c);
@@ -104,6 +111,11 @@ void Window::begin_imgui_frame() {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    // This frame has seen this batch's presses; their held-back releases count from the next.
+    pressed_this_frame_.clear();
+    for (const KeyEvent& e : held_releases_)
+        ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
+    held_releases_.clear();
 }
 
 void Window::end_imgui_frame() {

@@ -3,6 +3,7 @@
 // the headless contexts (fed by glfwGetProcAddress), plus Dear ImGui on top of it.
 
 #include <string>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -28,7 +29,10 @@ class Window {
     // own callbacks decide which events reach ImGui (forward_* below), so that keys that
     // are the application's never reach ImGui's focus and text editing.
     void init_imgui();
-    static void forward_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+    // Keys reach ImGui 1.86 as a state per frame, so a press and its release within one
+    // frame (a quick tap while a frame is slow) would be lost: such a release is held
+    // back until ImGui has seen the press in a frame.
+    void forward_key(int key, int scancode, int action, int mods);
     static void forward_char(GLFWwindow* window, unsigned int c);
     static void forward_mouse_button(GLFWwindow* window, int button, int action, int mods);
     static void forward_scroll(GLFWwindow* window, double dx, double dy);
@@ -37,7 +41,12 @@ class Window {
     void swap_buffers();
 
   private:
+    struct KeyEvent {
+        int key, scancode, action, mods;
+    };
     GLFWwindow* window_ = nullptr;
+    std::vector<int> pressed_this_frame_;  // keys ImGui has not yet seen down in a frame
+    std::vector<KeyEvent> held_releases_;  // their releases, for after the next frame starts
     std::string description_;
     bool imgui_ = false;
 };

@@ -18,6 +18,21 @@
 namespace rt::viewer {
 namespace {
 
+// Whether a text field (or a slider turned into one by Ctrl+click) is being edited now,
+// as of the last frame's end: io.WantTextInput lags a frame behind, and a key right after
+// Enter would still go to the field that Enter closed.
+bool editing_text() {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    return g.ActiveId != 0 && g.InputTextState.ID == g.ActiveId;
+}
+
+bool is_modifier(int key) {
+    return key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT ||
+           key == GLFW_KEY_LEFT_CONTROL || key == GLFW_KEY_RIGHT_CONTROL ||
+           key == GLFW_KEY_LEFT_ALT || key == GLFW_KEY_RIGHT_ALT || key == GLFW_KEY_LEFT_SUPER ||
+           key == GLFW_KEY_RIGHT_SUPER;
+}
+
 using Clock = std::chrono::steady_clock;
 
 Viewer* viewer_of(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
@@ -52,7 +67,7 @@ Viewer::Viewer(const ViewerOptions& options)
     });
     glfwSetCharCallback(w, [](GLFWwindow* win, unsigned int c) {
         // Characters are text only while a text field is being edited.
-        if (ImGui::GetIO().WantTextInput) rt::gl::Window::forward_char(win, c);
+        if (editing_text()) rt::gl::Window::forward_char(win, c);
     });
     glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int mods) {
         rt::gl::Window::forward_mouse_button(win, button, action, mods);
@@ -128,11 +143,30 @@ TraceKey Viewer::trace_key() const {
     return key;
 }
 
+// One line whenever the tracer's settings change (not the camera or the size): what the
+// user set is on record, and the GUI test reads it.
+void Viewer::log_trace_settings(const TraceKey& key) {
+    TraceKey settings = key;
+    settings.camera_version = 0;
+    settings.width = settings.height = 0;
+    if (logged_settings_ && *logged_settings_ == settings) return;
+    logged_settings_ = settings;
+    const auto on = [](bool b) { return b ? "on" : "off"; };
+    std::printf(
+        "trace settings: shadows %s, reflections %s, refractions %s, max depth %d, "
+        "item buffer %s, threads %d\n",
+        on(key.shadows), on(key.reflections), on(key.refractions), key.max_depth,
+        on(key.item_buffer), key.threads);
+    std::fflush(stdout);
+}
+
 // The schedule (refinement.h) says when and at which levels; the item buffer is made
 // for chains that reach full resolution.
 void Viewer::update_trace() {
-    std::vector<int> levels = schedule_.update(trace_key(), clock_.seconds());
+    const TraceKey key = trace_key();
+    std::vector<int> levels = schedule_.update(key, clock_.seconds());
     if (levels.empty()) return;
+    log_trace_settings(key);
     TraceRequest request;
     request.scene = scene_;
     request.camera = trace_camera();
@@ -268,26 +302,15 @@ void Viewer::update_title() {
     title_ = title;
 }
 
-namespace {
-
-bool is_modifier(int key) {
-    return key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT ||
-           key == GLFW_KEY_LEFT_CONTROL || key == GLFW_KEY_RIGHT_CONTROL ||
-           key == GLFW_KEY_LEFT_ALT || key == GLFW_KEY_RIGHT_ALT || key == GLFW_KEY_LEFT_SUPER ||
-           key == GLFW_KEY_RIGHT_SUPER;
-}
-
-}  // namespace
-
 // Keys are the viewer's, except while a text field is being edited (a click in one, or
 // Ctrl+click on a slider): then every key is ImGui's. ImGui always learns the modifiers
 // (Ctrl+click needs them) and every release, so no key stays down in it; Tab and the
 // others never reach its focus and tabbing, which used to turn a slider into a text
 // field that the next digit typed into.
 void Viewer::on_key(int key, int scancode, int action, int mods) {
-    const bool editing = ImGui::GetIO().WantTextInput;
+    const bool editing = editing_text();
     if (editing || is_modifier(key) || action == GLFW_RELEASE)
-        rt::gl::Window::forward_key(window_.handle(), key, scancode, action, mods);
+        window_.forward_key(key, scancode, action, mods);
     if (editing) return;
     if (key == GLFW_KEY_TAB && (action == GLFW_PRESS || action == GLFW_RELEASE)) {
         flicker_ = action == GLFW_PRESS;

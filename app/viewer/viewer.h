@@ -10,6 +10,8 @@
 #include <optional>
 #include <string>
 
+#include <glm/vec2.hpp>
+
 #include "app/gl/compositor.h"
 #include "app/gl/raster_renderer.h"
 #include "app/gl/texture.h"
@@ -76,9 +78,11 @@ class Viewer {
     void frame(float dt);
     void update_trace();
     TraceKey trace_key() const;
+    void log_trace_settings(const TraceKey& key);
     void collect_trace();
     void draw_views(int width, int height);
     void draw_panel();
+    void keep_panel_inside();
     void draw_overlays(int width, int height);
     void draw_help();
     void save_view(int width, int height);
@@ -101,6 +105,7 @@ class Viewer {
 
     Settings settings_;
     RefinementSchedule schedule_;
+    std::optional<TraceKey> logged_settings_;
     rt::Stopwatch clock_;  // the viewer's time, for the schedule
     std::uint64_t request_id_ = 0;
     FrameStats stats_;
@@ -111,6 +116,8 @@ class Viewer {
     bool help_ = false;
     std::optional<rt::Stopwatch> quit_asked_;  // since the first Esc
     bool panel_ = true;
+    glm::vec2 panel_pos_{10.0f, 10.0f};  // where the panel belongs (the user's, once moved)
+    bool panel_small_ = false;           // collapsed because the window is small
     bool flicker_ = false;
     bool save_requested_ = false;
     std::optional<std::string> dropped_;  // a scene to load before the next frame

@@ -58,10 +58,32 @@ void Viewer::cycle_scene(int step) {
     dropped_ = picked_ = scenes[static_cast<std::size_t>(index)].string();
 }
 
+// The panel stays inside the window: where the user put it while the window has room
+// for it, back there when the window grows again after a shrink (to 1 x 1, say), and
+// collapsed (to its title bar) while the window is too small to show it beside the image.
+void Viewer::keep_panel_inside() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    const bool room = display.x >= size.x && display.y >= size.y;
+    const bool inside = pos.x >= 0.0f && pos.y >= 0.0f && pos.x + size.x <= display.x &&
+                        pos.y + size.y <= display.y;
+    if (room && inside) {
+        panel_pos_ = {pos.x, pos.y};
+    } else if (room) {
+        ImGui::SetWindowPos(ImVec2(std::clamp(panel_pos_.x, 0.0f, display.x - size.x),
+                                   std::clamp(panel_pos_.y, 0.0f, display.y - size.y)));
+    }
+}
+
 void Viewer::draw_panel() {
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const bool small = display.x < 700.0f || display.y < 450.0f;
+    if (small != panel_small_) ImGui::SetNextWindowCollapsed(small, ImGuiCond_Always);
+    panel_small_ = small;
+    ImGui::SetNextWindowPos(ImVec2(panel_pos_.x, panel_pos_.y), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(310, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("rtview", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    keep_panel_inside();
 
     const std::string current = std::filesystem::path(scene_path_).filename().string();
     if (ImGui::BeginCombo("scene", current.c_str())) {
@@ -83,7 +105,11 @@ void Viewer::draw_panel() {
         }
     }
     // The ray tracer's settings come first: their place does not move with the view.
-    if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error_.c_str());
+    if (!error_.empty()) {  // wrapped at the panel's width, however long the message
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 290.0f);
+        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error_.c_str());
+        ImGui::PopTextWrapPos();
+    }
 
     section("ray tracer");
     ImGui::Checkbox("shadows", &settings_.shadows);
@@ -92,11 +118,15 @@ void Viewer::draw_panel() {
     ImGui::SameLine();
     ImGui::Checkbox("refraction", &settings_.refractions);
     ImGui::Checkbox("item buffer (primary hits from OpenGL)", &settings_.item_buffer);
-    ImGui::SliderInt("max depth", &settings_.max_depth, 0, 12);
-    ImGui::SliderFloat("resolution", &settings_.resolution_scale, 0.1f, 1.0f, "%.2f x window");
+    // Every slider clamps what is typed into it (Ctrl+click) to its range, too.
+    constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
+    ImGui::SliderInt("max depth", &settings_.max_depth, 0, 12, "%d", kClamp);
+    ImGui::SliderFloat("resolution", &settings_.resolution_scale, 0.1f, 1.0f, "%.2f x window",
+                       kClamp);
     const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     int threads = settings_.threads > 0 ? settings_.threads : cores;
-    if (ImGui::SliderInt("threads", &threads, 1, std::max(cores, 16))) settings_.threads = threads;
+    if (ImGui::SliderInt("threads", &threads, 1, std::max(cores, 16), "%d", kClamp))
+        settings_.threads = threads;
 
     section("view");
     for (std::size_t i = 0; i < kViewCount; ++i) {
@@ -106,9 +136,10 @@ void Viewer::draw_panel() {
     }
     if (view_ == View::kSplit) {
         ImGui::Checkbox("swap sides (X)", &swap_);
-        ImGui::SliderFloat("divider", &divider_, 0.0f, 1.0f);
+        ImGui::SliderFloat("divider", &divider_, 0.0f, 1.0f, "%.3f", kClamp);
     }
-    if (view_ == View::kDiff) ImGui::SliderFloat("diff scale", &settings_.diff_scale, 0.01f, 1.0f);
+    if (view_ == View::kDiff)
+        ImGui::SliderFloat("diff scale", &settings_.diff_scale, 0.01f, 1.0f, "%.3f", kClamp);
 
     section("statistics");
     ImGui::Text("raster: %.1f ms", stats_.raster_ms);

@@ -12,7 +12,7 @@ W=800 H=600
 "$rtrender" "$scene" --mode both --size ${W}x$H -q -o "$work/ref.png"
 "$rtrender" "$scene" --size ${W}x$H -q --no-shadows -o "$work/ref_noshadow.png"
 # Where the panel's check boxes are (its layout is fixed: ray-tracer settings first).
-SHADOWS="27 107" ITEM_BUFFER="27 130"
+SHADOWS="27 107" ITEM_BUFFER="27 130" MAX_DEPTH="120 153"
 
 # The scene picker's folder: the real scenes plus one that cannot load.
 mkdir -p "$work/assets/scenes"
@@ -133,6 +133,12 @@ done
 check "after the resizes the traced view is drawn again at ${W}x$H" test "$redrawn" -eq 0
 check "  ... at its size" test "$(identify -format %wx%h "$work/resized.png")" = "${W}x$H"
 key h
+# The panel is back where it was (it used to be left off-screen after the 1 x 1 resize):
+# a click on its shadows box reaches it.
+settle
+after "^trace settings:" click $SHADOWS
+check "after the resizes the panel is where it was" \
+    grep -q "shadows on" <(grep "^trace settings:" "$work/app.log" | tail -n1)
 after "^scene:" key Next Next Next Next Next Next Next Prior
 after "^traced:" true
 check "still running after resizes, unmapping and scene switches" kill -0 "$app_pid"
@@ -153,6 +159,13 @@ key 3
 wait_for_log "^view: split" $((splits + 1)) 5
 check "Tab then 3 with the panel focused: the view changes" test "$(log_count "^view: split")" -gt "$splits"
 after "^view: raster" key 1
+
+# A value typed into a slider (Ctrl+click, type, Enter) is clamped to the slider's range.
+xdotool mousemove --window "$wid" $MAX_DEPTH keydown ctrl click 1 keyup ctrl
+sleep 0.3
+after "^trace settings:" key BackSpace BackSpace BackSpace 5 4 Return
+check "max depth typed as 54 becomes 12 ($(grep "^trace settings:" "$work/app.log" | tail -n1))" \
+    grep -q "max depth 12," <(grep "^trace settings:" "$work/app.log" | tail -n1)
 
 # One Esc asks; a second within two seconds quits.
 after "^Esc: press Esc again" key Escape
