@@ -101,9 +101,9 @@ mutant near-plane-ignores-planes app/gl/gpu_scene.cpp \
     rt_gl_tests "${gl[@]}" --gtest_filter='*Skimming*'
 mutant keys-reach-imgui-focus app/viewer/viewer.cpp \
     'if (editing || is_modifier(key) || action == GLFW_RELEASE)
-        rt::gl::Window::forward_key(window_.handle(), key, scancode, action, mods);
+        window_.forward_key(key, scancode, action, mods);
     if (editing) return;' \
-    'rt::gl::Window::forward_key(window_.handle(), key, scancode, action, mods);
+    'window_.forward_key(key, scancode, action, mods);
     if (ImGui::GetIO().WantCaptureKeyboard) return;' \
     rtview ctest -R '^gui[.]' --output-on-failure
 mutant typed-slider-values-unclamped app/viewer/viewer_panel.cpp \
@@ -148,8 +148,13 @@ mutant checker-parity-wrong core/material.h \
     'return sum == 0.0f ? colour_a : colour_b;' \
     rt_tests $(unit 'Checker.*')
 
-mutant stale-mesh-hit-kept core/scene.cpp \
-    'if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};' 'if (t) hit.t = *t;' \
+mutant stale-mesh-hit-kept core/shapes.cpp \
+    'bool Sphere::intersect(const Ray& r, Hit& hit) const {
+    const auto t = rt::intersect(*this, r, hit.t);
+    if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};' \
+    'bool Sphere::intersect(const Ray& r, Hit& hit) const {
+    const auto t = rt::intersect(*this, r, hit.t);
+    if (t) hit.t = *t;' \
     rt_tests $(unit 'Scene.*')
 mutant light-on-surface-nan core/tracer.cpp \
     'if (!(distance > 0.0f) || !std::isfinite(distance)) continue;' '' \
