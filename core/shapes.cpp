@@ -67,14 +67,20 @@ std::optional<TriangleHit> intersect_triangle(const vec3& a, const vec3& b, cons
 }
 
 // --- each shape's part of the scene's questions --------------------------------------
+namespace {
+
 // A sphere or plane has no triangle: the whole record is replaced, so no earlier mesh
 // hit's triangle and barycentrics stay behind.
-
-bool Sphere::intersect(const Ray& r, Hit& hit) const {
-    const auto t = rt::intersect(*this, r, hit.t);
+template <class Analytic>
+bool replace_hit(const Analytic& shape, const Ray& r, Hit& hit) {
+    const auto t = rt::intersect(shape, r, hit.t);
     if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};
     return t.has_value();
 }
+
+}  // namespace
+
+bool Sphere::intersect(const Ray& r, Hit& hit) const { return replace_hit(*this, r, hit); }
 
 bool Sphere::occluded(const Ray& r, float t_max) const {
     return rt::intersect(*this, r, t_max).has_value();
@@ -87,11 +93,7 @@ LocalSurface Sphere::surface(const Ray& r, const Hit& hit) const {
     return LocalSurface{centre + radius * n, n, n, std::nullopt};
 }
 
-bool Plane::intersect(const Ray& r, Hit& hit) const {
-    const auto t = rt::intersect(*this, r, hit.t);
-    if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};
-    return t.has_value();
-}
+bool Plane::intersect(const Ray& r, Hit& hit) const { return replace_hit(*this, r, hit); }
 
 bool Plane::occluded(const Ray& r, float t_max) const {
     return rt::intersect(*this, r, t_max).has_value();

@@ -149,12 +149,7 @@ mutant checker-parity-wrong core/material.h \
     rt_tests $(unit 'Checker.*')
 
 mutant stale-mesh-hit-kept core/shapes.cpp \
-    'bool Sphere::intersect(const Ray& r, Hit& hit) const {
-    const auto t = rt::intersect(*this, r, hit.t);
-    if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};' \
-    'bool Sphere::intersect(const Ray& r, Hit& hit) const {
-    const auto t = rt::intersect(*this, r, hit.t);
-    if (t) hit.t = *t;' \
+    'if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};' 'if (t) hit.t = *t;' \
     rt_tests $(unit 'Scene.*')
 mutant light-on-surface-nan core/tracer.cpp \
     'if (!(distance > 0.0f) || !std::isfinite(distance)) continue;' '' \

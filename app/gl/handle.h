@@ -69,30 +69,21 @@ using RenderbufferHandle = Handle<RenderbufferKind>;
 using ShaderHandle = Handle<ShaderKind>;
 using ProgramHandle = Handle<ProgramKind>;
 
-inline BufferHandle make_buffer() {
+// A new name from one of GL's glGen* functions, held by a handle of that kind.
+template <class Kind>
+Handle<Kind> generate(void (*gen)(GLsizei, GLuint*)) {
     GLuint id = 0;
-    glGenBuffers(1, &id);
-    return BufferHandle(id);
+    gen(1, &id);
+    return Handle<Kind>(id);
 }
+inline BufferHandle make_buffer() { return generate<BufferKind>(glGenBuffers); }
 inline VertexArrayHandle make_vertex_array() {
-    GLuint id = 0;
-    glGenVertexArrays(1, &id);
-    return VertexArrayHandle(id);
+    return generate<VertexArrayKind>(glGenVertexArrays);
 }
-inline TextureHandle make_texture() {
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    return TextureHandle(id);
-}
-inline FramebufferHandle make_framebuffer() {
-    GLuint id = 0;
-    glGenFramebuffers(1, &id);
-    return FramebufferHandle(id);
-}
+inline TextureHandle make_texture() { return generate<TextureKind>(glGenTextures); }
+inline FramebufferHandle make_framebuffer() { return generate<FramebufferKind>(glGenFramebuffers); }
 inline RenderbufferHandle make_renderbuffer() {
-    GLuint id = 0;
-    glGenRenderbuffers(1, &id);
-    return RenderbufferHandle(id);
+    return generate<RenderbufferKind>(glGenRenderbuffers);
 }
 
 }  // namespace rt::gl
