@@ -37,7 +37,7 @@ struct ShearedRay {
 inline constexpr std::uint32_t kTriangle4Lanes = 4;
 
 struct Triangle4 {
-    Float4 v[3][3];  // v[vertex][axis] lanes; unused lanes are all zero (never hit)
+    Float4 v[3][3]{};  // v[vertex][axis] lanes; unused lanes stay zero (never hit)
 
     void set(int lane, const vec3& a, const vec3& b, const vec3& c) {
         for (int axis = 0; axis < 3; ++axis) {
