@@ -1,4 +1,5 @@
 #include "app/viewer/viewer.h"
+#include "app/viewer/keys.h"
 #include "app/viewer/views.h"
 
 #include <cstdio>
@@ -58,6 +59,7 @@ Viewer::Viewer(const ViewerOptions& options)
       first_scene_(read_scene(options.scene, options.accel,
                               options.up)),  // a bad file fails before any window opens
       window_(options.width, options.height, "rtview"),
+      scenes_(scenes_dir(RTVIEW_ASSET_DIR)),
       view_(options.view) {
     GLFWwindow* w = window_.handle();
     glfwSetWindowUserPointer(w, this);
@@ -106,7 +108,7 @@ void Viewer::install(std::shared_ptr<rt::Scene> scene, const std::string& path) 
     tracer_.cancel();  // the worker lets go of the old scene before it goes
     raster_ = std::move(raster);
     scene_ = std::move(scene);
-    scene_path_ = path;
+    scenes_.shown(path);
     controller_ = std::make_unique<CameraController>(scene_->camera, scene_->bounds());
     compositor_->set_item_palette(scene_->objects.size());
     schedule_.reset();
@@ -240,10 +242,7 @@ void Viewer::draw_views(int width, int height) {
 
 void Viewer::frame(float dt) {
     const glm::ivec2 fb = window_.framebuffer_size();
-    if (dropped_) {
-        load(*dropped_);
-        dropped_.reset();
-    }
+    if (const std::optional<std::string> next = scenes_.take()) load(*next);
     if (!ImGui::GetIO().WantCaptureKeyboard) {
         GLFWwindow* w = window_.handle();
         const auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0f : 0.0f; };
@@ -295,7 +294,7 @@ void Viewer::set_view(View view) {
 }
 
 void Viewer::update_title() {
-    std::string title = "rtview - " + std::filesystem::path(scene_path_).filename().string() +
+    std::string title = "rtview - " + std::filesystem::path(scenes_.current()).filename().string() +
                         " - " + view_label(view_);
     title += stats_.level == 1 ? " - traced" : " - tracing";
     if (title != title_) window_.set_title(title);
@@ -312,7 +311,9 @@ void Viewer::on_key(int key, int scancode, int action, int mods) {
     if (editing || is_modifier(key) || action == GLFW_RELEASE)
         window_.forward_key(key, scancode, action, mods);
     if (editing) return;
-    if (key == GLFW_KEY_TAB && (action == GLFW_PRESS || action == GLFW_RELEASE)) {
+    // A held control follows its key alone: Tab pressed with Shift and let go without it
+    // (or the other way round) still ends the flicker.
+    if (action_of(key, 0) == Action::kFlicker && (action == GLFW_PRESS || action == GLFW_RELEASE)) {
         flicker_ = action == GLFW_PRESS;
         std::printf("flicker: %s\n", flicker_ ? "on" : "off");
         std::fflush(stdout);
@@ -320,39 +321,46 @@ void Viewer::on_key(int key, int scancode, int action, int mods) {
     if (action != GLFW_PRESS) return;
     if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + static_cast<int>(kViewCount))
         return set_view(kViews[key - GLFW_KEY_1].value);
-    switch (key) {
-        case GLFW_KEY_X:
+    perform(action_of(key, mods));
+}
+
+// What a control does, whether from its key or the panel's button.
+void Viewer::perform(Action action) {
+    switch (action) {
+        case Action::kSwap:
             swap_ = !swap_;
             std::printf("swap: %s\n", swap_ ? "traced left" : "raster left");
             std::fflush(stdout);
             break;
-        case GLFW_KEY_H:
+        case Action::kPanel:
             panel_ = !panel_;
             break;
-        case GLFW_KEY_R:
+        case Action::kResetCamera:
             controller_->reset();
             break;
-        case GLFW_KEY_F1:
+        case Action::kHelp:
             help_ = !help_;
             break;
-        case GLFW_KEY_SLASH:
-            if (mods & GLFW_MOD_SHIFT) help_ = !help_;
-            break;  // '?'
-        case GLFW_KEY_F12:
-        case GLFW_KEY_P:
+        case Action::kSave:
             save_requested_ = true;
             break;
-        case GLFW_KEY_PAGE_DOWN:
-        case GLFW_KEY_PAGE_UP:
-            cycle_scene(key == GLFW_KEY_PAGE_DOWN ? 1 : -1);
+        case Action::kNextScene:
+            scenes_.step(1);
             break;
-        case GLFW_KEY_ESCAPE:
+        case Action::kPreviousScene:
+            scenes_.step(-1);
+            break;
+        case Action::kReload:
+            scenes_.reload();
+            break;
+        case Action::kEscape:
             on_escape();
             break;
-        case GLFW_KEY_Q:
-            if (mods & GLFW_MOD_CONTROL) quit("Ctrl+Q");
+        case Action::kQuit:
+            quit("Ctrl+Q");
             break;
-        default:
+        case Action::kFlicker:  // held, not pressed: on_key
+        case Action::kNone:
             break;
     }
 }
@@ -412,6 +420,6 @@ void Viewer::on_scroll(double dy) {
     if (!ImGui::GetIO().WantCaptureMouse) controller_->zoom(static_cast<float>(dy));
 }
 
-void Viewer::on_drop(const std::string& path) { dropped_ = path; }
+void Viewer::on_drop(const std::string& path) { scenes_.pick(path); }
 
 }  // namespace rt::viewer

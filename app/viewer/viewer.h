@@ -17,7 +17,9 @@
 #include "app/gl/texture.h"
 #include "app/gl/window.h"
 #include "app/viewer/camera_controller.h"
+#include "app/viewer/keys.h"
 #include "app/viewer/refinement.h"
+#include "app/viewer/scene_switcher.h"
 #include "app/viewer/trace_job.h"
 #include "core/stopwatch.h"
 
@@ -74,7 +76,7 @@ class Viewer {
     bool load(const std::string& path);  // on failure: false, error_ set, current scene kept
     void install(std::shared_ptr<rt::Scene> scene,
                  const std::string& path);  // GL upload, camera, restart
-    void cycle_scene(int step);             // PageDown / PageUp through assets/scenes
+    void perform(Action action);
     void frame(float dt);
     void update_trace();
     TraceKey trace_key() const;
@@ -96,9 +98,9 @@ class Viewer {
     rt::gl::Window window_;
     std::unique_ptr<rt::gl::Compositor> compositor_;
     std::shared_ptr<rt::Scene> scene_;
-    std::string scene_path_;
     std::unique_ptr<rt::gl::RasterRenderer> raster_;
     std::unique_ptr<CameraController> controller_;
+    SceneSwitcher scenes_;  // what is shown, what to show next
     TraceJob tracer_;
     rt::gl::Texture traced_texture_;
     rt::Image traced_image_;  // what traced_texture_ holds
@@ -120,8 +122,6 @@ class Viewer {
     bool panel_small_ = false;           // collapsed because the window is small
     bool flicker_ = false;
     bool save_requested_ = false;
-    std::optional<std::string> dropped_;  // a scene to load before the next frame
-    std::string picked_;                  // the last scene PageDown/PageUp asked for
     std::string error_;
     std::string title_;
 

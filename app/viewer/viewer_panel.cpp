@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "app/viewer/keys.h"
 #include "app/viewer/viewer.h"
 #include "app/viewer/views.h"
 #include "core/compare.h"
@@ -12,20 +13,6 @@
 
 namespace rt::viewer {
 namespace {
-
-std::filesystem::path asset_dir() {
-    if (const char* env = std::getenv("RTVIEW_ASSET_DIR"); env && *env) return env;
-    return RTVIEW_ASSET_DIR;
-}
-
-std::vector<std::filesystem::path> asset_scenes() {
-    std::vector<std::filesystem::path> out;
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(asset_dir() / "scenes", ec))
-        if (e.path().extension() == ".json") out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-    return out;
-}
 
 ImU32 heat_u32(float t) {
     const rt::vec3 c = rt::heat_colour(t);
@@ -46,17 +33,6 @@ void label(ImDrawList* draw, ImVec2 at, const char* text) {
 }
 
 }  // namespace
-
-void Viewer::cycle_scene(int step) {
-    const auto scenes = asset_scenes();
-    if (scenes.empty()) return;
-    // From the last scene asked for, loaded or not, so a broken one is stepped over.
-    const std::string from = dropped_.value_or(picked_.empty() ? scene_path_ : picked_);
-    const auto current = std::find(scenes.begin(), scenes.end(), std::filesystem::path(from));
-    const auto n = static_cast<long>(scenes.size());
-    const long index = current == scenes.end() ? 0 : ((current - scenes.begin()) + step + n) % n;
-    dropped_ = picked_ = scenes[static_cast<std::size_t>(index)].string();
-}
 
 // The panel stays inside the window: where the user put it while the window has room
 // for it, back there when the window grows again after a shrink (to 1 x 1, say), and
@@ -85,21 +61,22 @@ void Viewer::draw_panel() {
     ImGui::Begin("rtview", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     keep_panel_inside();
 
-    const std::string current = std::filesystem::path(scene_path_).filename().string();
+    const std::filesystem::path shown = scenes_.current();
+    const std::string current = shown.filename().string();
     if (ImGui::BeginCombo("scene", current.c_str())) {
-        for (const auto& path : asset_scenes())
+        for (const auto& path : scenes_.scenes())
             if (ImGui::Selectable(path.filename().string().c_str(), path.filename() == current))
-                dropped_ = path.string();
+                scenes_.pick(path);
         ImGui::EndCombo();
     }
     ImGui::TextDisabled("or drop a .json or .obj on the window");
-    if (std::filesystem::path(scene_path_).extension() == ".obj") {
+    if (shown.extension() == ".obj") {
         // A bare mesh from a Z-up tool (scans, CAD) is seen from the top: turn it.
         if (ImGui::BeginCombo("up axis", options_.up.c_str())) {
             for (const char* axis : rt::kUpAxes)
                 if (ImGui::Selectable(axis, options_.up == axis) && options_.up != axis) {
                     options_.up = axis;
-                    dropped_ = scene_path_;  // reloaded like a dropped file, next frame
+                    scenes_.reload();  // read again with the new axis, next frame
                 }
             ImGui::EndCombo();
         }
@@ -167,11 +144,10 @@ void Viewer::draw_panel() {
         }
     }
     ImGui::Separator();
-    if (ImGui::Button("reset camera (R)")) controller_->reset();
-    ImGui::SameLine();
-    if (ImGui::Button("save (F12)")) save_requested_ = true;
-    ImGui::SameLine();
-    if (ImGui::Button("keys (F1)")) help_ = !help_;
+    for (const Action a : {Action::kResetCamera, Action::kSave, Action::kHelp}) {
+        if (a != Action::kResetCamera) ImGui::SameLine();
+        if (ImGui::Button(with_keys(a).c_str())) perform(a);
+    }
     ImGui::End();
 }
 
@@ -218,27 +194,15 @@ void Viewer::draw_help() {
         view_keys += (i ? " " : "") + std::to_string(i + 1);
         view_labels += (i ? ", " : "") + std::string(kViews[i].label);
     }
-    const char* rows[][2] = {{view_keys.c_str(), view_labels.c_str()},
-                             {"Tab (hold)", "flicker between raster and traced"},
-                             {"X", "swap the split view's sides"},
-                             {"H", "hide or show this panel"},
-                             {"left drag", "orbit (on the split divider: move it)"},
-                             {"right/middle drag", "pan"},
-                             {"wheel", "zoom"},
-                             {"W A S D, Q E", "fly; Shift: faster"},
-                             {"R", "reset the camera"},
-                             {"PageDown, PageUp", "next, previous scene in assets/scenes"},
-                             {"F12 or P", "save the view (and raster, traced, difference)"},
-                             {"F1 or ?", "this help"},
-                             {"Esc", "close the help or a drop-down; twice: quit"},
-                             {"Ctrl+Q", "quit"}};
+    const auto row = [](const char* keys, const char* what) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(keys);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(what);
+    };
     if (ImGui::BeginTable("keys", 2)) {
-        for (const auto& row : rows) {
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(row[0]);
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(row[1]);
-        }
+        row(view_keys.c_str(), view_labels.c_str());
+        for (const Control& c : kControls) row(c.keys, c.what);
         ImGui::EndTable();
     }
     ImGui::End();

@@ -149,6 +149,12 @@ errors=$(log_count "radius: must be > 0")
 for _ in 1 2 3 4 5; do after "^scene:\|radius: must be > 0" key Next; done  # one of them is broken
 check "a broken scene at run time is reported" test "$(log_count "radius: must be > 0")" -gt "$errors"
 check "  ... and the viewer keeps running" kill -0 "$app_pid"
+# F5 reads the scene on screen again (a broken one asked for before is not it).
+shown=$(grep "^scene:" "$work/app.log" | tail -n1 | cut -d' ' -f2)
+scenes=$(log_count "^scene:")
+after "^scene:" key F5
+check "F5 reads the scene shown again ($shown)" test "$(log_count "^scene:")" -gt "$scenes" -a \
+    "$(grep "^scene:" "$work/app.log" | tail -n1 | cut -d' ' -f2)" = "$shown"
 
 # With the panel focused by a click, Tab then a digit: the digit switches the view; it is
 # never typed into a slider that Tab focused (it used to go into the threads slider).

@@ -1,15 +1,20 @@
-// The viewer's GL-free parts: the camera controller and the progressive trace job.
+// The viewer's GL-free parts: the camera controller, the progressive trace job, the
+// scene switcher and the table of controls.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "app/viewer/camera_controller.h"
+#include "app/viewer/keys.h"
 #include "app/viewer/refinement.h"
+#include "app/viewer/scene_switcher.h"
 #include "app/viewer/trace_job.h"
 #include "core/scene_loader.h"
 #include "test_util.h"
@@ -264,6 +269,81 @@ TEST(RefinementSchedule, CoarseWhileChangingFullOnceAtRest) {
     EXPECT_EQ(s.update(key, 7.0), (V{4, 2, 1}));
     s.reset();  // a new scene
     EXPECT_EQ(s.update(key, 7.1), (V{8, 4, 2, 1}));
+}
+
+// A folder of three scenes (and a file that is not one), made for the test.
+std::filesystem::path scene_folder(const char* name) {
+    const auto dir = std::filesystem::temp_directory_path() / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    for (const char* f : {"b.json", "a.json", "c.json", "notes.txt"})
+        std::ofstream(dir / f) << "{}";
+    return dir;
+}
+
+TEST(SceneSwitcher, StepsThroughTheFolderInOrderAndWraps) {
+    const auto dir = scene_folder("rtview_switcher_steps");
+    SceneSwitcher s(dir);
+    ASSERT_EQ(s.scenes().size(), 3u);  // the .json files only
+    s.shown((dir / "b.json").string());
+    EXPECT_FALSE(s.take());  // nothing asked for
+    s.step(1);
+    EXPECT_EQ(s.take(), (dir / "c.json").string());
+    EXPECT_FALSE(s.take());  // once
+    s.shown((dir / "c.json").string());
+    s.step(1);
+    EXPECT_EQ(s.take(), (dir / "a.json").string());  // wraps
+    s.shown((dir / "a.json").string());
+    s.step(-1);
+    EXPECT_EQ(s.take(), (dir / "c.json").string());  // and back
+}
+
+// When a scene fails to load, the one before stays on screen, but the next step goes on from
+// the broken one, not from the scene still shown, so one bad file is not a wall.
+TEST(SceneSwitcher, StepsOverASceneThatFailedToLoad) {
+    const auto dir = scene_folder("rtview_switcher_broken");
+    SceneSwitcher s(dir);
+    s.shown((dir / "a.json").string());
+    s.step(1);
+    EXPECT_EQ(s.take(), (dir / "b.json").string());  // b fails: a is still shown
+    s.step(1);
+    EXPECT_EQ(s.take(), (dir / "c.json").string());
+    EXPECT_EQ(s.current(), (dir / "a.json").string());
+}
+
+TEST(SceneSwitcher, DropsPicksAndReloads) {
+    const auto dir = scene_folder("rtview_switcher_drop");
+    SceneSwitcher s(dir);
+    s.shown("/elsewhere/model.obj");  // started on a file outside the folder
+    s.reload();
+    EXPECT_EQ(s.take(), "/elsewhere/model.obj");
+    s.step(1);
+    EXPECT_EQ(s.take(), (dir / "a.json").string());  // from outside: the first
+    s.step(-1);
+    EXPECT_EQ(s.take(), (dir / "c.json").string());  // or the last
+    s.pick("/dropped/scene.json");
+    s.step(1);  // the later request wins
+    EXPECT_EQ(s.take(), (dir / "a.json").string());
+    EXPECT_TRUE(SceneSwitcher(dir / "missing").scenes().empty());
+}
+
+TEST(Controls, KeysFindTheirActionWithExactlyTheirModifiers) {
+    EXPECT_EQ(action_of(GLFW_KEY_R, 0), Action::kResetCamera);
+    EXPECT_EQ(action_of(GLFW_KEY_P, 0), Action::kSave);
+    EXPECT_EQ(action_of(GLFW_KEY_F12, 0), Action::kSave);
+    EXPECT_EQ(action_of(GLFW_KEY_SLASH, GLFW_MOD_SHIFT), Action::kHelp);  // '?'
+    EXPECT_EQ(action_of(GLFW_KEY_SLASH, 0), Action::kNone);
+    EXPECT_EQ(action_of(GLFW_KEY_Q, GLFW_MOD_CONTROL), Action::kQuit);
+    EXPECT_EQ(action_of(GLFW_KEY_Q, GLFW_MOD_CONTROL | GLFW_MOD_NUM_LOCK), Action::kQuit);
+    EXPECT_EQ(action_of(GLFW_KEY_Q, 0), Action::kNone);  // flying down, not quitting
+    EXPECT_EQ(with_keys(Action::kResetCamera), "reset camera (R)");
+    // Every action has a row in the help, and every key-bound row a key.
+    for (const Control& c : kControls) {
+        EXPECT_NE(std::string(c.keys), "");
+        EXPECT_NE(std::string(c.what), "");
+        if (c.action == Action::kNone) continue;
+        EXPECT_EQ(action_of(c.chords[0].key, c.chords[0].mods), c.action) << c.name;
+    }
 }
 
 }  // namespace
