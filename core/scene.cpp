@@ -11,6 +11,11 @@ Ray object_ray(const Object& o, const Ray& r) {
     return o.transform ? o.transform->to_object(r) : r;
 }
 
+std::vector<TriangleMesh> built(std::vector<TriangleMesh> meshes, AccelKind kind) {
+    for (auto& mesh : meshes) mesh.build(kind);
+    return meshes;
+}
+
 }  // namespace
 
 Aabb Scene::object_bounds(const Object& o) const {
@@ -18,10 +23,15 @@ Aabb Scene::object_bounds(const Object& o) const {
     return o.transform ? box.transformed(o.transform->m) : box;
 }
 
-void Scene::build(AccelKind kind) {
-    for (auto& mesh : meshes) mesh.build(kind);
-    bounded_.clear();
-    unbounded_.clear();
+Scene::Scene(SceneDescription d, AccelKind kind)
+    : camera(d.camera),
+      background(d.background),
+      ambient(d.ambient),
+      origin(d.origin),
+      lights(std::move(d.lights)),
+      materials(std::move(d.materials)),
+      meshes(built(std::move(d.meshes), kind)),
+      objects(std::move(d.objects)) {
     std::vector<Aabb> boxes;
     for (std::uint32_t i = 0; i < objects.size(); ++i) {
         if (std::holds_alternative<Plane>(objects[i].shape)) {
@@ -38,6 +48,10 @@ void Scene::build(AccelKind kind) {
     for (std::size_t slot = 0; slot < by_slot.size(); ++slot)
         by_slot[slot] = bounded_[top_.order()[slot]];
     bounded_ = std::move(by_slot);
+}
+
+SceneDescription Scene::description() const {
+    return {camera, background, ambient, origin, lights, materials, meshes, objects};
 }
 
 bool Scene::intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const {

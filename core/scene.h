@@ -1,7 +1,9 @@
 #pragma once
-// Everything one frame needs: camera, lights, materials, meshes and the objects that
-// place shapes in the world. build() makes the acceleration structures; after it the
-// scene is read-only and safe to share between threads.
+// Everything one frame needs, in two types. A SceneDescription is plain data (camera,
+// lights, materials, meshes and the objects that place shapes in the world): what a
+// loader reads and a test assembles, edited freely. A Scene is a description built for
+// tracing: its constructor makes the acceleration structures, and from then on it is
+// read-only (its data is const) and safe to share between threads.
 
 #include <cstdint>
 #include <optional>
@@ -34,8 +36,7 @@ struct Object {
     std::optional<Transform> transform;
 };
 
-class Scene {
-  public:
+struct SceneDescription {
     Camera camera;
     vec3 background{0.0f};
     vec3 ambient{0.1f};  // the tutorial's I_a
@@ -45,11 +46,32 @@ class Scene {
     glm::dvec3 origin{0.0};
     std::vector<Light> lights;
     std::vector<Material> materials;
-    std::vector<TriangleMesh> meshes;
+    std::vector<TriangleMesh> meshes;  // the Scene builds them
     std::vector<Object> objects;
+};
 
-    void build(AccelKind kind = AccelKind::kBvh);
+class Scene {
+  public:
+    // Builds every mesh's structure and the one over the objects, with `kind`.
+    explicit Scene(SceneDescription description, AccelKind kind = AccelKind::kBvh);
+    // Built once and shared (by reference or shared_ptr), never copied or moved: the
+    // const data below says "read-only" in the type.
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+
+    const Camera camera;
+    const vec3 background;
+    const vec3 ambient;
+    const glm::dvec3 origin;
+    const std::vector<Light> lights;
+    const std::vector<Material> materials;
+    const std::vector<TriangleMesh> meshes;  // built
+    const std::vector<Object> objects;
+
     AccelKind accel_kind() const { return top_.kind(); }
+    // The description this scene was built from (a copy): to change a scene, change
+    // its description and build a new one.
+    SceneDescription description() const;
 
     // Closest hit in (0, hit.t); hit.t may be preset to limit the search.
     bool intersect(const Ray& r, Hit& hit) const;
@@ -91,13 +113,21 @@ struct Overloaded : F... {
 template <class... F>
 Overloaded(F...) -> Overloaded<F...>;  // clang 14 does not deduce aggregates by itself
 
+// Calls f with the object's shape, a mesh reference resolved (in `meshes`) to its
+// MeshInstance: the one interface every shape has (core/shapes.h). For descriptions and
+// built scenes alike.
 template <class F>
-decltype(auto) Scene::visit_shape(const Object& o, F&& f) const {
+decltype(auto) visit_shape(const std::vector<TriangleMesh>& meshes, const Object& o, F&& f) {
     return std::visit(Overloaded{[&](const MeshRef& m) {
                                      return f(MeshInstance{meshes[m.mesh], m.own_materials});
                                  },
                                  [&](const auto& shape) { return f(shape); }},
                       o.shape);
+}
+
+template <class F>
+decltype(auto) Scene::visit_shape(const Object& o, F&& f) const {
+    return rt::visit_shape(meshes, o, std::forward<F>(f));
 }
 
 }  // namespace rt

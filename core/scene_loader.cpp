@@ -24,7 +24,7 @@ bool far_from_origin(const glm::dvec3& p) {
     return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kFarFromOrigin;
 }
 
-// Walks one JSON scene into a Scene, keeping the names and caches that loading needs.
+// Walks one JSON scene into a SceneDescription, keeping the names and caches that loading needs.
 class JsonSceneReader {
   public:
     JsonSceneReader(std::filesystem::path path, LoadedScene& out)
@@ -72,7 +72,7 @@ class JsonSceneReader {
     std::filesystem::path path_;
     std::string file_;
     LoadedScene& out_;
-    Scene& scene_;
+    SceneDescription& scene_;
     std::map<std::string, std::uint32_t> material_names_;
     std::map<std::pair<std::filesystem::path, bool>, std::uint32_t> mesh_cache_;
     glm::dvec3 origin_{0.0};  // the file's coordinates of the scene's zero
@@ -355,7 +355,7 @@ LoadedScene load_json_scene(const std::filesystem::path& path) {
     return out;
 }
 
-void frame_bounds(Scene& scene, const Aabb& bounds, int cols, int rows) {
+void frame_bounds(SceneDescription& scene, const Aabb& bounds, int cols, int rows) {
     const vec3 centre = bounds.centre();
     // Never so close that float cannot tell the eye from the centre (a few float
     // spacings away at least): collapsed geometry would otherwise put the eye on the
@@ -401,7 +401,7 @@ LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions&
     LoadedScene out;
     out.origin = obj.origin;
     out.scene.origin = obj.origin;
-    Scene& scene = out.scene;
+    SceneDescription& scene = out.scene;
     scene.materials = material_presets();
     for (Material& m : obj.materials) scene.materials.push_back(std::move(m));
     const auto presets = static_cast<std::uint32_t>(material_presets().size());

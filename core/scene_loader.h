@@ -11,7 +11,7 @@
 namespace rt {
 
 struct LoadedScene {
-    Scene scene;  // not yet built (Scene::build)
+    SceneDescription scene;  // Scene(std::move(scene), kind) builds it
     std::vector<std::string> warnings;
     // Where the scene's zero lies in the file's coordinates: a bare mesh is moved next to
     // the origin (in double precision) so that float keeps its shape and its lighting.
@@ -33,7 +33,7 @@ LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions&
 inline constexpr const char* kUpAxes[] = {"y", "z", "x", "-y", "-z", "-x"};
 
 // Looks at the bounds from the front and a little above, with a key and a fill light.
-void frame_bounds(Scene& scene, const Aabb& bounds, int cols, int rows);
+void frame_bounds(SceneDescription& scene, const Aabb& bounds, int cols, int rows);
 
 // Materials every scene can name without defining them: default, matte, mirror, glass.
 std::vector<Material> material_presets();

@@ -89,9 +89,10 @@ TriangleMesh triangles_of(const Plane&, int) { return {}; }
 
 }  // namespace
 
-TriangleMesh object_triangles(const Scene& scene, const Object& object, int sphere_segments) {
-    return scene.visit_shape(
-        object, [&](const auto& shape) { return triangles_of(shape, sphere_segments); });
+TriangleMesh object_triangles(const std::vector<TriangleMesh>& meshes, const Object& object,
+                              int sphere_segments) {
+    return visit_shape(meshes, object,
+                       [&](const auto& shape) { return triangles_of(shape, sphere_segments); });
 }
 
 }  // namespace rt

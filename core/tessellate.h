@@ -25,7 +25,8 @@ float projected_radius_pixels(const Camera& camera, const vec3& centre, float ra
 // (with its per-triangle materials); a plane has none (unbounded: the raster view draws
 // plane_quad under the eye). What rtbench's flattened scene and the raster view's
 // single triangles are made of.
-TriangleMesh object_triangles(const Scene& scene, const Object& object, int sphere_segments);
+TriangleMesh object_triangles(const std::vector<TriangleMesh>& meshes, const Object& object,
+                              int sphere_segments);
 
 // A square of the plane, half-size `extent`, centred on the point of the plane nearest
 // to `around`, as two triangles in the plane's own (object) space.

@@ -96,6 +96,13 @@ mutant refinement-without-rest app/viewer/refinement.cpp \
 mutant orbit-about-the-tilted-view-up app/viewer/camera_controller.cpp \
     'frame_v_ = nearest_axis(home_.v);' 'frame_v_ = home_.v;' \
     rt_viewer_tests tests/rt_viewer_tests --gtest_filter='CameraController.*'
+mutant switcher-steps-from-the-scene-shown app/viewer/scene_switcher.cpp \
+    'const std::filesystem::path from = asked_.empty() ? current_ : asked_;' \
+    'const std::filesystem::path from = current_;' \
+    rt_viewer_tests tests/rt_viewer_tests --gtest_filter='SceneSwitcher.*'
+mutant switcher-controls-ignore-modifiers app/viewer/keys.h \
+    'chord.mods == (mods & kChordMods))' '(mods | 1) != 0)' \
+    rt_viewer_tests tests/rt_viewer_tests --gtest_filter='Controls.*'
 mutant near-plane-ignores-planes app/gl/gpu_scene.cpp \
     'nearest = std::min(nearest, plane_distance(*p, o, camera.eye));' '(void)p;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*Skimming*'

@@ -19,7 +19,7 @@ using rt::vec3;
 
 // The scene as world-space triangles: meshes and triangles as they are, spheres
 // tessellated (96 slices); planes, being infinite, are left out.
-rt::TriangleMesh flatten(const rt::Scene& scene);
+rt::TriangleMesh flatten(const rt::SceneDescription& scene);
 
 struct RaySet {
     std::string name;  // primary, shadow, secondary

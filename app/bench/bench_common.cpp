@@ -12,10 +12,10 @@
 
 namespace rt::bench {
 
-rt::TriangleMesh flatten(const rt::Scene& scene) {
+rt::TriangleMesh flatten(const rt::SceneDescription& scene) {
     rt::TriangleMesh out;
     for (const rt::Object& o : scene.objects) {
-        const rt::TriangleMesh mesh = rt::object_triangles(scene, o, 96);
+        const rt::TriangleMesh mesh = rt::object_triangles(scene.meshes, o, 96);
         const glm::mat4 m = o.transform ? o.transform->m : glm::mat4(1.0f);
         const auto base = static_cast<std::uint32_t>(out.positions.size());
         for (const vec3& p : mesh.positions) out.positions.push_back(vec3(m * glm::vec4(p, 1.0f)));

@@ -15,9 +15,8 @@ namespace rt::bench {
 
 int run_item_buffer(const ItemBufferBenchOptions& o) {
     rt::LoadedScene loaded = rt::load_scene(o.scene);
-    rt::Scene& scene = loaded.scene;
-    scene.camera = scene.camera.resized(o.width, o.height);
-    scene.build();
+    loaded.scene.camera = loaded.scene.camera.resized(o.width, o.height);
+    const rt::Scene scene(std::move(loaded.scene));
     const auto context = rt::gl::create_headless_context(o.gl, "rtbench");
     rt::gl::RasterRenderer raster(scene);
     rt::RenderOptions options;

@@ -85,7 +85,7 @@ GpuScene::GpuScene(const Scene& scene) : scene_(scene), bounds_(scene.bounds()) 
     }
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         if (std::holds_alternative<Triangle>(scene.objects[i].shape))
-            triangles_.try_emplace(i, object_triangles(scene, scene.objects[i], 0));
+            triangles_.try_emplace(i, object_triangles(scene.meshes, scene.objects[i], 0));
     }
     quad_.emplace(plane_quad(Plane{{0, 0, 1}, 0}, glm::vec3(0.0f), 1.0f));
 }

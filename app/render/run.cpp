@@ -61,6 +61,7 @@ class Job {
 
     const Options& o_;
     rt::LoadedScene loaded_;
+    std::optional<rt::Scene> scene_;  // loaded_.scene, built
     nlohmann::json stats_;
     std::unique_ptr<rt::gl::Context> context_;
     std::unique_ptr<rt::gl::RasterRenderer> raster_;
@@ -72,10 +73,10 @@ rt::gl::RasterRenderer& Job::raster() {
         context_ = rt::gl::create_headless_context(o_.gl, "rtrender");
         stats_["gl"] = context_->description();
         if (!o_.quiet) std::printf("OpenGL: %s\n", context_->description().c_str());
-        raster_ = std::make_unique<rt::gl::RasterRenderer>(loaded_.scene);
-        if (loaded_.scene.lights.size() > rt::gl::RasterRenderer::kMaxLights)
+        raster_ = std::make_unique<rt::gl::RasterRenderer>(*scene_);
+        if (scene_->lights.size() > rt::gl::RasterRenderer::kMaxLights)
             std::cerr << o_.scene << ": lights: the raster view uses the first "
-                      << rt::gl::RasterRenderer::kMaxLights << " of " << loaded_.scene.lights.size()
+                      << rt::gl::RasterRenderer::kMaxLights << " of " << scene_->lights.size()
                       << " lights\n";
     }
     return *raster_;
@@ -88,7 +89,7 @@ rt::Image Job::render_traced(const rt::ItemBuffer* item_buffer, rt::RenderStats&
     options.trace = o_.trace;
     ProgressBar bar(!o_.quiet && isatty(STDERR_FILENO));
     rt::Image image = rt::render(
-        loaded_.scene, options, &stats, [&](int done, int total) { bar.update(done, total); }, {},
+        *scene_, options, &stats, [&](int done, int total) { bar.update(done, total); }, {},
         item_buffer);
     bar.finish();
     nonfinite_ += stats.nonfinite_pixels;
@@ -105,9 +106,9 @@ rt::Image Job::trace() {
     if (o_.item_buffer) {
         // The first pass pays for buffers and sphere meshes; the second is what a frame costs.
         rt::Stopwatch watch;
-        ib = raster().render_item_buffer(loaded_.scene.camera);
+        ib = raster().render_item_buffer(scene_->camera);
         stats_["item_buffer_cold_seconds"] = watch.lap();
-        ib = raster().render_item_buffer(loaded_.scene.camera);
+        ib = raster().render_item_buffer(scene_->camera);
         stats_["item_buffer_seconds"] = watch.seconds();
     }
     rt::Image image =
@@ -174,7 +175,7 @@ void Job::report_diff(const rt::Image& raster_image, const rt::Image& traced) {
 }
 
 void Job::write_stats() {
-    const rt::Scene& scene = loaded_.scene;
+    const rt::Scene& scene = *scene_;
     stats_["scene"] = o_.scene;
     stats_["mode"] = rt::name_of(kModeNames, o_.mode);
     stats_["width"] = scene.camera.cols;
@@ -204,14 +205,15 @@ int Job::run() {
     }
     if (!o_.quiet)
         for (const std::string& w : loaded_.warnings) std::cerr << w << '\n';
-    rt::Scene& scene = loaded_.scene;
-    if (size) scene.camera = scene.camera.resized(size->first, size->second);
+    rt::SceneDescription& description = loaded_.scene;
+    if (size) description.camera = description.camera.resized(size->first, size->second);
     stats_["load_seconds"] = watch.lap();
     stats_["origin"] = {loaded_.origin.x, loaded_.origin.y, loaded_.origin.z};
     {
         const PhaseLine phase(show_phases, "building the acceleration structures");
-        scene.build(o_.accel);
+        scene_.emplace(std::move(description), o_.accel);
     }
+    const rt::Scene& scene = *scene_;
     stats_["build_seconds"] = watch.lap();
     stats_["accel"] = rt::accel_name(o_.accel);
 

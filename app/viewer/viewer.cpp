@@ -43,13 +43,11 @@ Viewer* viewer_of(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUser
 namespace {
 
 // The part of loading that needs no GL: parse and build. Throws rt::Error.
-std::shared_ptr<rt::Scene> read_scene(const std::string& path, rt::AccelKind accel,
-                                      const std::string& up) {
+std::shared_ptr<const rt::Scene> read_scene(const std::string& path, rt::AccelKind accel,
+                                            const std::string& up) {
     rt::LoadedScene loaded = rt::load_scene(path, rt::LoadOptions{.up = up});
     for (const std::string& w : loaded.warnings) std::cerr << w << '\n';
-    auto scene = std::make_shared<rt::Scene>(std::move(loaded.scene));
-    scene->build(accel);
-    return scene;
+    return std::make_shared<const rt::Scene>(std::move(loaded.scene), accel);
 }
 
 }  // namespace
@@ -103,7 +101,7 @@ bool Viewer::load(const std::string& path) {
     }
 }
 
-void Viewer::install(std::shared_ptr<rt::Scene> scene, const std::string& path) {
+void Viewer::install(std::shared_ptr<const rt::Scene> scene, const std::string& path) {
     auto raster = std::make_unique<rt::gl::RasterRenderer>(*scene);
     tracer_.cancel();  // the worker lets go of the old scene before it goes
     raster_ = std::move(raster);

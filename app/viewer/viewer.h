@@ -74,7 +74,7 @@ class Viewer {
     void on_escape();
     void quit(const char* how);
     bool load(const std::string& path);  // on failure: false, error_ set, current scene kept
-    void install(std::shared_ptr<rt::Scene> scene,
+    void install(std::shared_ptr<const rt::Scene> scene,
                  const std::string& path);  // GL upload, camera, restart
     void perform(Action action);
     void frame(float dt);
@@ -94,10 +94,10 @@ class Viewer {
     View shown_view() const;
 
     ViewerOptions options_;
-    std::shared_ptr<rt::Scene> first_scene_;  // read before the window opens
+    std::shared_ptr<const rt::Scene> first_scene_;  // read before the window opens
     rt::gl::Window window_;
     std::unique_ptr<rt::gl::Compositor> compositor_;
-    std::shared_ptr<rt::Scene> scene_;
+    std::shared_ptr<const rt::Scene> scene_;
     std::unique_ptr<rt::gl::RasterRenderer> raster_;
     std::unique_ptr<CameraController> controller_;
     SceneSwitcher scenes_;  // what is shown, what to show next

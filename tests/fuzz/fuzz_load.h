@@ -21,7 +21,7 @@ inline int fuzz_load(const std::uint8_t* data, std::size_t size, const char* ext
         .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     try {
         rt::LoadedScene loaded = rt::load_scene(path);
-        loaded.scene.build();
+        const rt::Scene scene(std::move(loaded.scene));  // the build, too, must survive it
     } catch (const rt::Error&) {
     }
     return 0;

@@ -36,10 +36,9 @@ class Gl : public ::testing::TestWithParam<gl::Backend> {
         EXPECT_EQ(gl::debug_error_count(), errors_before_) << "KHR_debug reported GL errors";
     }
 
-    static Scene load(const std::string& name, int w, int h) {
+    static SceneDescription load(const std::string& name, int w, int h) {
         LoadedScene loaded = load_scene(test::scene_path(name));
         loaded.scene.camera = loaded.scene.camera.resized(w, h);
-        loaded.scene.build();
         return std::move(loaded.scene);
     }
 
@@ -76,7 +75,7 @@ const char* const kScenes[] = {"tutorial.json", "whitted.json", "cornell.json",
 // true sphere cover different pixels, may differ.
 TEST_P(Gl, RasterEqualsLocalTracingAwayFromSilhouettes) {
     for (const char* name : kScenes) {
-        const Scene scene = load(name, 200, 150);
+        const Scene scene(load(name, 200, 150));
         gl::RasterRenderer raster(scene);
         const Image r = raster.render(scene.camera);
         const ItemBuffer ib = raster.render_item_buffer(scene.camera);
@@ -111,9 +110,10 @@ TEST_P(Gl, RasterEqualsLocalTracingAwayFromSilhouettes) {
 // the lower rows of the raster image were background.
 TEST_P(Gl, ACameraSkimmingTheFloorSeesItInBothPipelines) {
     for (const float height : {0.05f, -0.05f}) {
-        Scene scene = load("whitted.json", 160, 120);
-        scene.camera = Camera::look_at({0.3f, height, 4.5f}, {0.0f, height - 0.4f, 0.0f}, {0, 1, 0},
-                                       38.0f, 160, 120);
+        SceneDescription desc = load("whitted.json", 160, 120);
+        desc.camera = Camera::look_at({0.3f, height, 4.5f}, {0.0f, height - 0.4f, 0.0f}, {0, 1, 0},
+                                      38.0f, 160, 120);
+        const Scene scene(std::move(desc));
         gl::RasterRenderer raster(scene);
         const Image r = raster.render(scene.camera);
         RenderOptions options;
@@ -125,7 +125,7 @@ TEST_P(Gl, ACameraSkimmingTheFloorSeesItInBothPipelines) {
 }
 
 TEST_P(Gl, ItemBufferNamesTheObjectAtEachPixel) {
-    const Scene scene = load("tutorial.json", 120, 90);
+    const Scene scene(load("tutorial.json", 120, 90));
     gl::RasterRenderer raster(scene);
     const ItemBuffer ib = raster.render_item_buffer(scene.camera);
     std::size_t checked = 0;
@@ -143,7 +143,7 @@ TEST_P(Gl, ItemBufferNamesTheObjectAtEachPixel) {
 }
 
 TEST_P(Gl, ItemBufferNamesTheTriangleOfAMesh) {
-    const Scene scene = load("cornell.json", 96, 96);
+    const Scene scene(load("cornell.json", 96, 96));
     gl::RasterRenderer raster(scene);
     const ItemBuffer ib = raster.render_item_buffer(scene.camera);
     int same = 0, interior = 0;
@@ -163,7 +163,7 @@ TEST_P(Gl, ItemBufferNamesTheTriangleOfAMesh) {
 
 TEST_P(Gl, ItemBufferImagesAgreeWithFullTraversal) {
     for (const char* name : kScenes) {
-        const Scene scene = load(name, 200, 150);
+        const Scene scene(load(name, 200, 150));
         gl::RasterRenderer raster(scene);
         const ItemBuffer ib = raster.render_item_buffer(scene.camera);
         RenderStats with, without;
@@ -186,7 +186,7 @@ TEST_P(Gl, BrokenShaderIsALocatedError) {
         std::filesystem::copy_file(gl::shader_dir() / f, dir / f);
     test::write_file(dir / "phong.frag",
                      "#version 330 core\nout vec4 c;\nvoid main() {\n  c = vec4(1.0) +;\n}\n");
-    const Scene scene = load("tutorial.json", 32, 32);
+    const Scene scene(load("tutorial.json", 32, 32));
     try {
         gl::RasterRenderer raster(scene, dir);
         FAIL() << "compiled";
@@ -241,9 +241,9 @@ TEST_P(Gl, LinesAndPointsAreDrawnByTheRasterOnly) {
                              "wire.obj",
                          "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nl 1 2 4 3 1\np 1 4\n");
     LoadedScene loaded = load_scene(path);
-    Scene& scene = loaded.scene;
-    scene.camera = scene.camera.resized(96, 72);
-    scene.build();
+    SceneDescription& desc = loaded.scene;
+    desc.camera = desc.camera.resized(96, 72);
+    const Scene scene(std::move(desc));
     gl::RasterRenderer raster(scene);
     const Image image = raster.render(scene.camera);
     int drawn = 0;
@@ -263,15 +263,15 @@ TEST(GlContexts, DestroyingOneEglContextLeavesTheOtherWorking) {
     auto second = gl::create_headless_context(gl::Backend::kEgl, "rt_gl_tests");
     LoadedScene loaded = load_scene(test::scene_path("tutorial.json"));
     loaded.scene.camera = loaded.scene.camera.resized(64, 48);
-    loaded.scene.build();
+    const Scene scene(std::move(loaded.scene));
     first->make_current();
-    const Image before = gl::RasterRenderer(loaded.scene).render(loaded.scene.camera);
+    const Image before = gl::RasterRenderer(scene).render(scene.camera);
     first.reset();
     second->make_current();
-    const Image after = gl::RasterRenderer(loaded.scene).render(loaded.scene.camera);
+    const Image after = gl::RasterRenderer(scene).render(scene.camera);
     EXPECT_EQ(compare_images(before, after).pixels_over, 0u);
     int lit = 0;
-    for (const vec3& p : after.pixels) lit += p != loaded.scene.background;
+    for (const vec3& p : after.pixels) lit += p != scene.background;
     EXPECT_GT(lit, 64 * 48 / 4);
 }
 

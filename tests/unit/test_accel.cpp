@@ -75,13 +75,13 @@ TEST_P(AccelTest, MeshHitsMatchTheTutorialsTestOnEveryTriangle) {
 
 TEST_P(AccelTest, SceneHitsMatchTestingEveryObject) {
     std::mt19937 rng(11);
-    Scene scene;
-    scene.materials.push_back(Material{});
+    SceneDescription desc;
+    desc.materials.push_back(Material{});
     std::uniform_real_distribution<float> radius(0.1f, 1.0f);
     for (int i = 0; i < 500; ++i)
-        scene.objects.push_back(Object{"s", Sphere{random_point(rng, 12.0f), radius(rng)}, 0, {}});
-    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -13}, 0, {}});
-    scene.build(GetParam());
+        desc.objects.push_back(Object{"s", Sphere{random_point(rng, 12.0f), radius(rng)}, 0, {}});
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -13}, 0, {}});
+    const Scene scene(std::move(desc), GetParam());
     EXPECT_EQ(scene.accel_kind(), GetParam());
     for (int i = 0; i < 3000; ++i) {
         const Ray ray{random_point(rng, 15.0f), random_point(rng, 1.0f)};

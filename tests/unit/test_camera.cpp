@@ -42,12 +42,12 @@ TEST(Camera, LookAtBuildsAnOrthonormalFrameLookingAlongMinusN) {
 
 // A traced hit point, projected by the raster matrices, lands in the pixel whose ray found it.
 TEST(Camera, ProjectedHitLandsInItsPixel) {
-    Scene scene;
-    scene.materials.push_back(Material{});
-    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -1}, 0, {}});
-    scene.objects.push_back(Object{"ball", Sphere{{0.3f, 0.2f, -2}, 1}, 0, {}});
-    scene.camera = Camera::look_at({0.5f, 1.5f, 4}, {0, 0, -1}, {0.1f, 1, 0}, 50.0f, 97, 61);
-    scene.build();
+    SceneDescription desc;
+    desc.materials.push_back(Material{});
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -1}, 0, {}});
+    desc.objects.push_back(Object{"ball", Sphere{{0.3f, 0.2f, -2}, 1}, 0, {}});
+    desc.camera = Camera::look_at({0.5f, 1.5f, 4}, {0, 0, -1}, {0.1f, 1, 0}, 50.0f, 97, 61);
+    const Scene scene(std::move(desc));
     const glm::mat4 clip = scene.camera.projection(100.0f) * scene.camera.view();
     int checked = 0;
     for (int y = 0; y < scene.camera.rows; y += 3) {

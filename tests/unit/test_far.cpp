@@ -37,17 +37,22 @@ std::string far_json(double o) {
     return R"({"camera": {"eye": )" + point(o, 0, 2, 10) + R"(, "look_at": )" + point(o, 0, 0, 0) +
            R"(, "fov": 40}, "resolution": [160, 120],
       "materials": {"floor": {"checker": {"colors": [[0.9, 0.9, 0.9], [0.2, 0.2, 0.6]]}}},
-      "lights": [{"type": "point", "position": )" + point(o, 5, 8, 6) + R"(}],
+      "lights": [{"type": "point", "position": )" +
+           point(o, 5, 8, 6) + R"(}],
       "objects": [
-        {"type": "sphere", "center": )" + point(o, 0, 0, 0) + R"(, "radius": 1.5, "material": "mirror"},
+        {"type": "sphere", "center": )" +
+           point(o, 0, 0, 0) + R"(, "radius": 1.5, "material": "mirror"},
         {"type": "sphere", "radius": 0.5, "transform": {"scale": [1, 2, 1], "translate": )" +
            point(o, 2.5, 0, 0) + R"(}},
-        {"type": "triangle", "vertices": [)" + point(o, -3, -1, -1) + ", " + point(o, -2, -1, -1) +
-           ", " + point(o, -2.5, 1, -1) + R"(]},
-        {"type": "mesh", "file": "tetra)" + number(o) + R"(.obj"},
-        {"type": "mesh", "file": "tetra0.obj", "transform": {"translate": )" + point(o, 1.5, 1.5, -2) + R"(}},
-        {"type": "plane", "normal": [0, 1, 0], "point": )" + point(o, 0, -1.5, 0) +
-           R"(, "material": "floor"}]})";
+        {"type": "triangle", "vertices": [)" +
+           point(o, -3, -1, -1) + ", " + point(o, -2, -1, -1) + ", " + point(o, -2.5, 1, -1) +
+           R"(]},
+        {"type": "mesh", "file": "tetra)" +
+           number(o) + R"(.obj"},
+        {"type": "mesh", "file": "tetra0.obj", "transform": {"translate": )" +
+           point(o, 1.5, 1.5, -2) + R"(}},
+        {"type": "plane", "normal": [0, 1, 0], "point": )" +
+           point(o, 0, -1.5, 0) + R"(, "material": "floor"}]})";
 }
 
 // A tetrahedron beside the ball, in the file's world coordinates (offset by o).
@@ -73,8 +78,8 @@ std::string far_cube_obj(double o) {
 Image render_file(const std::filesystem::path& path, RenderStats* stats) {
     LoadedScene loaded = load_scene(path);
     loaded.scene.camera = loaded.scene.camera.resized(160, 120);
-    loaded.scene.build();
-    return render(loaded.scene, {}, stats);
+    const Scene scene(std::move(loaded.scene));
+    return render(scene, {}, stats);
 }
 
 // The tolerance: at most 0.5 % of pixels differ by more than 2/255 from the scene at the
@@ -104,7 +109,9 @@ void expect_same_at_every_offset(const std::string& name, std::string (*make)(do
     }
 }
 
-TEST(Far, JsonSceneLooksTheSameAtAnyOffset) { expect_same_at_every_offset("json", far_json, ".json"); }
+TEST(Far, JsonSceneLooksTheSameAtAnyOffset) {
+    expect_same_at_every_offset("json", far_json, ".json");
+}
 
 TEST(Far, BareObjLooksTheSameAtAnyOffset) {
     expect_same_at_every_offset("cube", far_cube_obj, ".obj");
@@ -121,8 +128,9 @@ TEST(Far, TinyModelAwayFromTheOriginKeepsItsSizeOnScreen) {
     const auto tiny = [](double o) {
         std::string text;
         for (int i = 0; i < 8; ++i)
-            text += "v " + number((i & 4 ? 5e-4 : -5e-4) + o) + " " + number((i & 2 ? 5e-4 : -5e-4) + o) +
-                    " " + number((i & 1 ? 5e-4 : -5e-4) + o) + "\n";
+            text += "v " + number((i & 4 ? 5e-4 : -5e-4) + o) + " " +
+                    number((i & 2 ? 5e-4 : -5e-4) + o) + " " + number((i & 1 ? 5e-4 : -5e-4) + o) +
+                    "\n";
         for (const char* f : {"1 2 4 3", "5 7 8 6", "1 5 6 2", "3 4 8 7", "1 3 7 5", "2 6 8 4"})
             text += std::string("f ") + f + "\n";
         return text;
@@ -142,14 +150,16 @@ TEST(Far, BunnyFarAwayIsTheBunny) {
             std::istringstream v(line.substr(2));
             double x, y, z;
             v >> x >> y >> z;
-            far << "v " << number(x + 1e7) << " " << number(y + 1e7) << " " << number(z + 1e7) << "\n";
+            far << "v " << number(x + 1e7) << " " << number(y + 1e7) << " " << number(z + 1e7)
+                << "\n";
         } else {
             far << line << "\n";
         }
     }
     const auto dir = test::temp_dir("far_bunny");
     const auto path = test::write_file(dir / "far.obj", far.str());
-    const Image near = render_file(test::source_dir() / "assets/models/stanford-bunny.obj", nullptr);
+    const Image near =
+        render_file(test::source_dir() / "assets/models/stanford-bunny.obj", nullptr);
     const Image image = render_file(path, nullptr);
     EXPECT_LE(compare_images(near, image).share_over, 0.005);
 }

@@ -20,7 +20,7 @@ TEST(Loader, AssetScenesLoadWithoutWarnings) {
 }
 
 TEST(Loader, ReadsEveryFieldOfTheDefaultScene) {
-    const Scene s = load_scene(test::scene_path("whitted.json")).scene;
+    const Scene s(load_scene(test::scene_path("whitted.json")).scene);
     EXPECT_EQ(s.camera.cols, 640);
     EXPECT_EQ(s.lights.size(), 2u);
     const auto& floor = s.materials[s.objects[0].material];
@@ -39,7 +39,7 @@ TEST(Loader, TransformListsApplyInOrder) {
     const auto path = test::write_file(dir / "s.json", R"({
       "camera": {"eye": [0,0,5], "look_at": [0,0,0]},
       "objects": [{"type": "sphere", "transform": [{"translate": [1,0,0]}, {"scale": 2}]}]})");
-    const Scene s = load_scene(path).scene;
+    const Scene s(load_scene(path).scene);
     const glm::vec4 centre = s.objects[0].transform->m * glm::vec4(0, 0, 0, 1);
     EXPECT_FLOAT_EQ(centre.x, 2.0f);  // translated first, then scaled
 }
@@ -102,7 +102,8 @@ const std::vector<BadCase> kBadCases = {
     // The same characters earlier in a name are not the number.
     {"huge_number_after_name",
      "{\"camera\": {\"eye\": [0,0,5], \"look_at\": [0,0,0]},\n \"objects\": [\n"
-     "  {\"type\": \"sphere\", \"name\": \"1e999\"},\n  {\"type\": \"sphere\", \"radius\": 1e999}]}",
+     "  {\"type\": \"sphere\", \"name\": \"1e999\"},\n  {\"type\": \"sphere\", \"radius\": "
+     "1e999}]}",
      "line 4, column 32", "number overflow"},
     {"float_overflow", with_camera(R"("objects": [{"type": "sphere", "radius": 1e300}])"),
      "/objects/0/radius", "too large"},
@@ -164,10 +165,10 @@ namespace {
 
 // A byte-order mark before a JSON scene is skipped like any whitespace.
 TEST(Loader, JsonWithAByteOrderMarkLoads) {
-    const auto path = test::write_file(
-        test::temp_dir("json_bom") / "bom.json",
-        "\xEF\xBB\xBF{\"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
-        " \"objects\": [{\"type\": \"sphere\"}]}");
+    const auto path =
+        test::write_file(test::temp_dir("json_bom") / "bom.json",
+                         "\xEF\xBB\xBF{\"camera\": {\"eye\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
+                         " \"objects\": [{\"type\": \"sphere\"}]}");
     const LoadedScene loaded = load_scene(path);
     EXPECT_EQ(loaded.scene.objects.size(), 1u);
 }
@@ -175,8 +176,8 @@ TEST(Loader, JsonWithAByteOrderMarkLoads) {
 // --up turns a bare mesh so that the named axis points up (+y), keeping handedness:
 // a proper rotation, so the triangle's winding (its front) is kept too.
 TEST(Loader, UpAxisTurnsABareMesh) {
-    const auto path = test::write_file(test::temp_dir("up") / "z_up.obj",
-                                       "v 0 0 0\nv 1 0 0\nv 0 0 2\nf 1 2 3\n");
+    const auto path =
+        test::write_file(test::temp_dir("up") / "z_up.obj", "v 0 0 0\nv 1 0 0\nv 0 0 2\nf 1 2 3\n");
     // The vertex (0, 0, 2), and the face normal x cross z = (0, -2, 0), turned: a rotation
     // carries the normal along (a reflection would flip it, and the face's front).
     const vec3 want_top[] = {{0, 2, 0}, {0, 0, 2}, {0, -2, 0}, {0, 0, -2}};

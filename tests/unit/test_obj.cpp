@@ -57,8 +57,8 @@ TEST(Obj, SmoothSurfacesGetAveragedNormals) {
 
 TEST(Obj, BareObjSceneIsFramedAndLit) {
     LoadedScene loaded = load_scene(test::source_dir() / "assets/models/teapot.obj");
-    Scene& s = loaded.scene;
-    s.build();
+    SceneDescription& desc = loaded.scene;
+    const Scene s(std::move(desc));
     EXPECT_EQ(s.lights.size(), 2u);
     const Aabb b = s.bounds();
     const glm::mat4 clip = s.camera.projection(1e4f) * s.camera.view();
@@ -109,7 +109,8 @@ TEST(Obj, ByteOrderMarkIsSkippedInObjAndMtl) {
     const auto dir = test::temp_dir("obj_bom");
     test::write_file(dir / "bom.mtl", "\xEF\xBB\xBFnewmtl red\nKd 1 0 0\n");
     const auto path = test::write_file(
-        dir / "bom.obj", "\xEF\xBB\xBFmtllib bom.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+        dir / "bom.obj",
+        "\xEF\xBB\xBFmtllib bom.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
     const ObjData obj = load_obj(path);
     ASSERT_EQ(obj.materials.size(), 1u);
     EXPECT_EQ(obj.materials[0].name, "red");
@@ -125,8 +126,8 @@ TEST(Obj, MtllibNamingADirectoryIsAWarning) {
     const auto dir = test::temp_dir("obj_mtldir");
     std::filesystem::create_directories(dir / "sub");
     for (const char* line : {"mtllib \n", "mtllib sub\n", "mtllib sub \n"}) {
-        const auto path = test::write_file(dir / "m.obj",
-                                           std::string(line) + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        const auto path = test::write_file(
+            dir / "m.obj", std::string(line) + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         const ObjData obj = load_obj(path);
         EXPECT_EQ(obj.mesh.triangles.size(), 1u) << line;
         EXPECT_FALSE(obj.warnings.empty()) << line;
@@ -143,8 +144,9 @@ TEST(Obj, LinesAndPointsLoadWithOneWarning) {
     EXPECT_EQ(obj.mesh.segments, (std::vector<glm::uvec2>{{0, 1}, {1, 2}}));  // 3-9: out of range
     EXPECT_EQ(obj.mesh.points, (std::vector<std::uint32_t>{0}));
     ASSERT_EQ(obj.warnings.size(), 1u);
-    EXPECT_NE(obj.warnings[0].find("2 line segments and 1 points are drawn by the raster view only"),
-              std::string::npos);
+    EXPECT_NE(
+        obj.warnings[0].find("2 line segments and 1 points are drawn by the raster view only"),
+        std::string::npos);
     const auto only = test::write_file(test::temp_dir("obj_only_lines") / "o.obj",
                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\n");
     const ObjData lines = load_obj(only);

@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <type_traits>
 
+#include "core/compare.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
 #include "test_util.h"
@@ -10,15 +12,14 @@
 namespace rt {
 namespace {
 
-Scene load_small(const std::string& name, int w, int h) {
+SceneDescription load_small(const std::string& name, int w, int h) {
     LoadedScene loaded = load_scene(test::scene_path(name));
     loaded.scene.camera = loaded.scene.camera.resized(w, h);
-    loaded.scene.build();
     return std::move(loaded.scene);
 }
 
 TEST(Render, SameBytesWhateverTheThreadCount) {
-    const Scene scene = load_small("whitted.json", 120, 90);
+    const Scene scene(load_small("whitted.json", 120, 90));
     RenderOptions options;
     options.threads = 1;
     const Image one = render(scene, options);
@@ -33,8 +34,25 @@ TEST(Render, SameBytesWhateverTheThreadCount) {
     }
 }
 
+// A built Scene is read-only in its type: no member can be assigned, and it is never
+// copied. Its description() builds again, with any structure, into the same picture.
+static_assert(!std::is_copy_constructible_v<Scene> && !std::is_move_constructible_v<Scene>);
+static_assert(!std::is_assignable_v<decltype((std::declval<Scene&>().lights)), std::vector<Light>>);
+static_assert(!std::is_assignable_v<decltype((std::declval<Scene&>().camera)), Camera>);
+
+TEST(Render, ADescriptionBuildsTheSamePictureWithAnyStructure) {
+    const Scene scene(load_small("cornell.json", 64, 64));
+    const Image bvh = render(scene, {});
+    for (AccelKind kind : {AccelKind::kBrute, AccelKind::kGrid, AccelKind::kBvh2}) {
+        const Scene again(scene.description(), kind);
+        EXPECT_EQ(again.accel_kind(), kind);
+        EXPECT_EQ(again.objects.size(), scene.objects.size());
+        EXPECT_EQ(compare_images(bvh, render(again, {})).pixels_over, 0u) << accel_name(kind);
+    }
+}
+
 TEST(Render, ProgressCountsEveryTileOnce) {
-    const Scene scene = load_small("tutorial.json", 100, 50);
+    const Scene scene(load_small("tutorial.json", 100, 50));
     RenderOptions options;
     options.tile_size = 16;  // 7 x 4 tiles
     int calls = 0, last = 0, total_seen = 0;
@@ -52,7 +70,7 @@ TEST(Render, ProgressCountsEveryTileOnce) {
 }
 
 TEST(Render, CancellationStopsTheWorkers) {
-    const Scene scene = load_small("whitted.json", 320, 240);
+    const Scene scene(load_small("whitted.json", 320, 240));
     std::stop_source stop;
     RenderOptions options;
     options.tile_size = 8;
@@ -78,7 +96,7 @@ TEST(Render, EveryAssetSceneGivesASanePicture) {
          std::filesystem::directory_iterator(test::source_dir() / "assets/scenes")) {
         if (entry.path().extension() != ".json") continue;
         ++scenes;
-        const Scene scene = load_small(entry.path().filename().string(), 64, 48);
+        const Scene scene(load_small(entry.path().filename().string(), 64, 48));
         RenderStats stats;
         const Image image = render(scene, {}, &stats);
         EXPECT_EQ(stats.nonfinite_pixels, 0u) << entry.path();
@@ -97,7 +115,7 @@ TEST(Render, EveryAssetSceneGivesASanePicture) {
 }
 
 TEST(Render, DefaultSceneShowsShadowsReflectionAndRefraction) {
-    const Scene scene = load_small("whitted.json", 160, 120);
+    const Scene scene(load_small("whitted.json", 160, 120));
     RenderStats stats;
     render(scene, {}, &stats);
     EXPECT_GT(stats.rays.shadow, 0u);

@@ -19,15 +19,15 @@ namespace {
 TEST(Robustness, NoShadowAcneAtAnyScale) {
     for (double scale : {1e-3, 1.0, 1e4}) {
         const auto s = static_cast<float>(scale);
-        Scene scene;
-        scene.camera =
+        SceneDescription desc;
+        desc.camera =
             Camera::look_at(vec3(0.3f, 0.2f, 5.0f) * s, vec3(0.0f), {0, 1, 0}, 30.0f, 61, 61);
-        scene.ambient = vec3(0.1f);
-        scene.materials.push_back(test::plain(vec3(1.0f), vec3(0.8f)));
+        desc.ambient = vec3(0.1f);
+        desc.materials.push_back(test::plain(vec3(1.0f), vec3(0.8f)));
         const glm::dvec3 light = glm::dvec3(2.0, 3.0, 5.0) * scale;
-        scene.lights.push_back(Light{Light::Type::kPoint, vec3(light), {}, vec3(1.0f)});
-        scene.objects.push_back(Object{"ball", Sphere{vec3(0.0f), s}, 0, {}});
-        scene.build();
+        desc.lights.push_back(Light{Light::Type::kPoint, vec3(light), {}, vec3(1.0f)});
+        desc.objects.push_back(Object{"ball", Sphere{vec3(0.0f), s}, 0, {}});
+        const Scene scene(std::move(desc));
         const Image image = render(scene, {});
         int on_sphere = 0, lit = 0;
         for (int y = 0; y < 61; ++y) {
@@ -59,17 +59,17 @@ TEST(Robustness, NoShadowAcneAtAnyScale) {
 // not hit it again (self-intersection), at every scale.
 TEST(Robustness, ReflectionsLeaveTheirSurfaceAtAnyScale) {
     for (float scale : {1e-3f, 1.0f, 1e4f}) {
-        Scene scene;
-        scene.camera =
+        SceneDescription desc;
+        desc.camera =
             Camera::look_at(vec3(0.1f, 0.2f, 5.0f) * scale, vec3(0.0f), {0, 1, 0}, 20.0f, 21, 21);
-        scene.ambient = vec3(1.0f);
+        desc.ambient = vec3(1.0f);
         Material mirror = test::plain(vec3(0.0f), vec3(0.0f));
         mirror.reflectivity = 1.0f;
-        scene.materials.push_back(mirror);
-        scene.materials.push_back(test::plain({0.2f, 0.5f, 0.7f}, vec3(0.0f)));
-        scene.objects.push_back(Object{"mirror", Sphere{vec3(0.0f), scale}, 0, {}});
-        scene.objects.push_back(Object{"sky", Sphere{vec3(0.0f), 100.0f * scale}, 1, {}});
-        scene.build();
+        desc.materials.push_back(mirror);
+        desc.materials.push_back(test::plain({0.2f, 0.5f, 0.7f}, vec3(0.0f)));
+        desc.objects.push_back(Object{"mirror", Sphere{vec3(0.0f), scale}, 0, {}});
+        desc.objects.push_back(Object{"sky", Sphere{vec3(0.0f), 100.0f * scale}, 1, {}});
+        const Scene scene(std::move(desc));
         const Image image = render(scene, {});
         const vec3 centre = image.at(10, 10);  // the mirror shows the inside of the big sphere
         EXPECT_NEAR(centre.x, 0.2f, 1e-4f) << scale;
@@ -100,16 +100,16 @@ TEST(Robustness, DegenerateGeometryIsHarmless) {
     EXPECT_FALSE(
         intersect(Plane{{0, 1, 0}, 0}, Ray{{0, 0, 5}, {0, 0, -1}}, kInfinity));  // in the plane
 
-    Scene scene;
-    scene.camera = test::axis_camera({0.5f, 0.5f, 3.0f});
-    scene.materials.push_back(Material{});
-    scene.meshes.push_back(mesh);
-    scene.objects.push_back(Object{"mesh", MeshRef{0, true}, 0, {}});
-    scene.objects.push_back(Object{"dot", Sphere{vec3(0.0f), 0.0f}, 0, {}});
-    scene.objects.push_back(
+    SceneDescription desc;
+    desc.camera = test::axis_camera({0.5f, 0.5f, 3.0f});
+    desc.materials.push_back(Material{});
+    desc.meshes.push_back(mesh);
+    desc.objects.push_back(Object{"mesh", MeshRef{0, true}, 0, {}});
+    desc.objects.push_back(Object{"dot", Sphere{vec3(0.0f), 0.0f}, 0, {}});
+    desc.objects.push_back(
         Object{"floor", Plane{{0, 1, 0}, 0.5f}, 0, {}});  // the camera is level with it
-    scene.lights.push_back(Light{Light::Type::kPoint, {0.5f, 0.5f, 3.0f}, {}, vec3(1.0f)});
-    scene.build();
+    desc.lights.push_back(Light{Light::Type::kPoint, {0.5f, 0.5f, 3.0f}, {}, vec3(1.0f)});
+    const Scene scene(std::move(desc));
     RenderStats stats;
     render(scene, {}, &stats);
     EXPECT_EQ(stats.nonfinite_pixels, 0u);

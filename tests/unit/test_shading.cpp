@@ -57,14 +57,14 @@ TEST(Refract, TotalInternalReflectionPastTheCriticalAngle) {
 // A sphere lit from the eye: at the centre pixel n = l = v, so n.l = 1 and r.v = 1 and
 // I = ka Ia + (kd + ks) I_l.
 TEST(Phong, LitSphereCentreEqualsHandValue) {
-    Scene scene;
-    scene.camera = test::axis_camera({0, 0, 5});
-    scene.ambient = vec3(0.2f, 0.3f, 0.4f);
-    scene.materials.push_back(
+    SceneDescription desc;
+    desc.camera = test::axis_camera({0, 0, 5});
+    desc.ambient = vec3(0.2f, 0.3f, 0.4f);
+    desc.materials.push_back(
         test::plain({0.5f, 0.4f, 0.3f}, {0.6f, 0.2f, 0.1f}, vec3(0.25f), 20.0f));
-    scene.lights.push_back(Light{Light::Type::kPoint, {0, 0, 5}, {}, {0.9f, 0.8f, 0.7f}});
-    scene.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
-    scene.build();
+    desc.lights.push_back(Light{Light::Type::kPoint, {0, 0, 5}, {}, {0.9f, 0.8f, 0.7f}});
+    desc.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
+    const Scene scene(std::move(desc));
     const vec3 expected = vec3(0.5f, 0.4f, 0.3f) * scene.ambient +
                           (vec3(0.6f, 0.2f, 0.1f) + vec3(0.25f)) * vec3(0.9f, 0.8f, 0.7f);
     expect_colour(centre_pixel(scene), expected);
@@ -72,32 +72,31 @@ TEST(Phong, LitSphereCentreEqualsHandValue) {
 
 TEST(Phong, DiffuseFollowsTheCosineOfTheLight) {
     // Light at 60 degrees from the normal, no specular: I = kd cos 60 I_l.
-    Scene scene;
-    scene.camera = test::axis_camera({0, 0, 5});
-    scene.ambient = vec3(0.0f);
-    scene.materials.push_back(test::plain(vec3(0.0f), vec3(0.8f)));
-    scene.lights.push_back(Light{
+    SceneDescription desc;
+    desc.camera = test::axis_camera({0, 0, 5});
+    desc.ambient = vec3(0.0f);
+    desc.materials.push_back(test::plain(vec3(0.0f), vec3(0.8f)));
+    desc.lights.push_back(Light{
         Light::Type::kDirectional, {}, glm::normalize(vec3(-std::sqrt(3.0f), 0, -1)), vec3(1.0f)});
-    scene.objects.push_back(Object{"wall", Plane{{0, 0, 1}, 0}, 0, {}});
-    scene.build();
+    desc.objects.push_back(Object{"wall", Plane{{0, 0, 1}, 0}, 0, {}});
+    const Scene scene(std::move(desc));
     expect_colour(centre_pixel(scene), vec3(0.4f));
 }
 
 // A ball hangs between a light and the floor: the floor point under it gets ka Ia only.
-Scene shadow_scene() {
-    Scene scene;
-    scene.camera = Camera::look_at({0, 4, 4}, {0, 0, 0}, {0, 1, 0}, 30.0f, 31, 31);
-    scene.ambient = vec3(0.3f);
-    scene.materials.push_back(test::plain(vec3(0.5f), vec3(0.7f)));
-    scene.lights.push_back(Light{Light::Type::kPoint, {0, 10, 0}, {}, vec3(1.0f)});
-    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
-    scene.objects.push_back(Object{"blocker", Sphere{{0, 5, 0}, 1}, 0, {}});
-    scene.build();
-    return scene;
+SceneDescription shadow_scene() {
+    SceneDescription desc;
+    desc.camera = Camera::look_at({0, 4, 4}, {0, 0, 0}, {0, 1, 0}, 30.0f, 31, 31);
+    desc.ambient = vec3(0.3f);
+    desc.materials.push_back(test::plain(vec3(0.5f), vec3(0.7f)));
+    desc.lights.push_back(Light{Light::Type::kPoint, {0, 10, 0}, {}, vec3(1.0f)});
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
+    desc.objects.push_back(Object{"blocker", Sphere{{0, 5, 0}, 1}, 0, {}});
+    return desc;
 }
 
 TEST(Shadows, PointInShadowGetsAmbientOnly) {
-    const Scene scene = shadow_scene();
+    const Scene scene(shadow_scene());
     expect_colour(centre_pixel(scene), vec3(0.5f * 0.3f));
     TraceOptions no_shadows;
     no_shadows.shadows = false;  // the same point, lit: ambient plus kd n.l I_l with n.l = 1
@@ -106,37 +105,36 @@ TEST(Shadows, PointInShadowGetsAmbientOnly) {
 
 TEST(Shadows, FeelerStopsAtThePointLight) {
     // An occluder beyond the light casts no shadow: the feeler covers t in (0, 1) only.
-    Scene scene = shadow_scene();
-    std::get<Sphere>(scene.objects[1].shape).centre = {0, 12, 0};
-    scene.build();
+    SceneDescription desc = shadow_scene();
+    std::get<Sphere>(desc.objects[1].shape).centre = {0, 12, 0};
+    const Scene scene(std::move(desc));
     expect_colour(centre_pixel(scene), vec3(0.5f * 0.3f + 0.7f));
 }
 
 // A mirror facing the camera shows exactly what is behind the camera: a wall lit by
 // ambient light only, of colour ka Ia.
-Scene mirror_scene(float reflectivity) {
-    Scene scene;
-    scene.camera = test::axis_camera({0, 0, 5});
-    scene.ambient = vec3(1.0f);
+SceneDescription mirror_scene(float reflectivity) {
+    SceneDescription desc;
+    desc.camera = test::axis_camera({0, 0, 5});
+    desc.ambient = vec3(1.0f);
     Material mirror = test::plain(vec3(0.0f), vec3(0.0f));
     mirror.reflectivity = reflectivity;
-    scene.materials.push_back(mirror);
-    scene.materials.push_back(test::plain({0.2f, 0.5f, 0.7f}, vec3(0.0f)));
-    scene.objects.push_back(Object{"mirror", Plane{{0, 0, 1}, 0}, 0, {}});
-    scene.objects.push_back(Object{"wall", Plane{{0, 0, 1}, 20}, 1, {}});
-    scene.build();
-    return scene;
+    desc.materials.push_back(mirror);
+    desc.materials.push_back(test::plain({0.2f, 0.5f, 0.7f}, vec3(0.0f)));
+    desc.objects.push_back(Object{"mirror", Plane{{0, 0, 1}, 0}, 0, {}});
+    desc.objects.push_back(Object{"wall", Plane{{0, 0, 1}, 20}, 1, {}});
+    return desc;
 }
 
 TEST(Reflection, MirrorShowsExactlyTheColourItFaces) {
-    expect_colour(centre_pixel(mirror_scene(1.0f)), {0.2f, 0.5f, 0.7f});
-    expect_colour(centre_pixel(mirror_scene(0.5f)), {0.1f, 0.25f, 0.35f});
+    expect_colour(centre_pixel(Scene(mirror_scene(1.0f))), {0.2f, 0.5f, 0.7f});
+    expect_colour(centre_pixel(Scene(mirror_scene(0.5f))), {0.1f, 0.25f, 0.35f});
 }
 
 TEST(Reflection, StopsAtMaxDepthBetweenTwoMirrors) {
-    Scene scene = mirror_scene(0.9f);
-    scene.materials[1] = scene.materials[0];  // two facing mirrors: an endless corridor
-    scene.build();
+    SceneDescription desc = mirror_scene(0.9f);
+    desc.materials[1] = desc.materials[0];  // two facing mirrors: an endless corridor
+    const Scene scene(std::move(desc));
     for (int depth : {0, 1, 3, 7}) {
         TraceOptions options;
         options.max_depth = depth;
@@ -148,9 +146,9 @@ TEST(Reflection, StopsAtMaxDepthBetweenTwoMirrors) {
 }
 
 TEST(Reflection, StopsWhenTheWeightFallsUnderTheThreshold) {
-    Scene scene = mirror_scene(0.5f);
-    scene.materials[1] = scene.materials[0];
-    scene.build();
+    SceneDescription desc = mirror_scene(0.5f);
+    desc.materials[1] = desc.materials[0];
+    const Scene scene(std::move(desc));
     TraceOptions options;
     options.max_depth = 50;
     options.min_weight = 0.1f;  // 0.5^n >= 0.1 for n = 1..3
@@ -162,17 +160,17 @@ TEST(Reflection, StopsWhenTheWeightFallsUnderTheThreshold) {
 TEST(Refraction, RayThroughAGlassBallCentreComesOutStraight) {
     // Through the centre the ray meets both surfaces head-on and is not bent: the pixel
     // shows the wall behind, weighted by the transparency at each of the two crossings.
-    Scene scene;
-    scene.camera = test::axis_camera({0, 0, 5});
-    scene.ambient = vec3(1.0f);
+    SceneDescription desc;
+    desc.camera = test::axis_camera({0, 0, 5});
+    desc.ambient = vec3(1.0f);
     Material glass = test::plain(vec3(0.0f), vec3(0.0f));
     glass.transparency = 0.8f;
     glass.ior = 1.5f;
-    scene.materials.push_back(glass);
-    scene.materials.push_back(test::plain({0.9f, 0.6f, 0.3f}, vec3(0.0f)));
-    scene.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
-    scene.objects.push_back(Object{"wall", Plane{{0, 0, 1}, -10}, 1, {}});
-    scene.build();
+    desc.materials.push_back(glass);
+    desc.materials.push_back(test::plain({0.9f, 0.6f, 0.3f}, vec3(0.0f)));
+    desc.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
+    desc.objects.push_back(Object{"wall", Plane{{0, 0, 1}, -10}, 1, {}});
+    const Scene scene(std::move(desc));
     RayCounts counts;
     const vec3 c = Tracer(scene, {}).trace_primary(scene.camera.ray(15, 15), counts);
     expect_colour(c, 0.64f * vec3(0.9f, 0.6f, 0.3f));
@@ -191,11 +189,11 @@ Material clear_glass(float transparency) {
 // shows: a plane at y = 0 seen from straight above, lit from 45 degrees. r.v = cos 45,
 // so I = ks (1/sqrt 2)^10 I_l = ks I_l / 32 (without the power it would be ks I_l 0.707).
 TEST(Phong, SpecularIsRaisedToTheShininess) {
-    Scene scene;
-    scene.materials.push_back(test::plain(vec3(0.0f), vec3(0.0f), vec3(0.8f), 10.0f));
-    scene.lights.push_back(Light{Light::Type::kPoint, {1, 1, 0}, {}, vec3(1.0f)});
-    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
-    scene.build();
+    SceneDescription desc;
+    desc.materials.push_back(test::plain(vec3(0.0f), vec3(0.0f), vec3(0.8f), 10.0f));
+    desc.lights.push_back(Light{Light::Type::kPoint, {1, 1, 0}, {}, vec3(1.0f)});
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
+    const Scene scene(std::move(desc));
     const Ray down{{0, 1, 0}, {0, -1, 0}};
     Hit hit;
     ASSERT_TRUE(scene.intersect(down, hit));
@@ -234,21 +232,21 @@ INSTANTIATE_TEST_SUITE_P(Refraction, GlassWinding,
 // enters, as a tracer that trusts the winding does with an inward slab) it could not
 // enter at all (sin t > 1).
 TEST_P(GlassWinding, ObliqueRayFollowsSnellThroughASlab) {
-    Scene scene;
-    scene.ambient = vec3(1.0f);
-    scene.materials.push_back(clear_glass(1.0f));
-    scene.materials.push_back(test::plain({1.0f, 0.0f, 0.0f}, vec3(0.0f)));  // red band
-    scene.materials.push_back(test::plain({0.0f, 0.0f, 1.0f}, vec3(0.0f)));  // blue elsewhere
-    scene.meshes.push_back(box_mesh({-50, -1, -50}, {50, 0, 50}, GetParam()));
-    scene.objects.push_back(Object{"slab", MeshRef{0, false}, 0, {}});
+    SceneDescription desc;
+    desc.ambient = vec3(1.0f);
+    desc.materials.push_back(clear_glass(1.0f));
+    desc.materials.push_back(test::plain({1.0f, 0.0f, 0.0f}, vec3(0.0f)));  // red band
+    desc.materials.push_back(test::plain({0.0f, 0.0f, 1.0f}, vec3(0.0f)));  // blue elsewhere
+    desc.meshes.push_back(box_mesh({-50, -1, -50}, {50, 0, 50}, GetParam()));
+    desc.objects.push_back(Object{"slab", MeshRef{0, false}, 0, {}});
     const float x = 2.9772f, half = 0.03f;
-    scene.objects.push_back(
+    desc.objects.push_back(
         Object{"band",
                Triangle{{x - half, -2.999f, -50}, {x + half, -2.999f, -50}, {x, -2.999f, 50}},
                1,
                {}});
-    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -3}, 2, {}});
-    scene.build();
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -3}, 2, {}});
+    const Scene scene(std::move(desc));
     const float a = glm::radians(50.0f);
     const Ray ray{{-std::sin(a), std::cos(a), 0.0f}, {std::sin(a), -std::cos(a), 0.0f}};
     RayCounts counts;
@@ -265,14 +263,14 @@ TEST_P(GlassWinding, ObliqueRayFollowsSnellThroughASlab) {
 // to a red floor. Each of the three crossings keeps kt of it: kt^3 red. Going black, or
 // out through the side, would be a bug.
 TEST_P(GlassWinding, TotalInternalReflectionReflectsInsteadOfGoingBlack) {
-    Scene scene;
-    scene.ambient = vec3(1.0f);
-    scene.materials.push_back(clear_glass(0.9f));
-    scene.materials.push_back(test::plain({1.0f, 0.0f, 0.0f}, vec3(0.0f)));
-    scene.meshes.push_back(box_mesh({-10, -2, -10}, {1, 0, 10}, GetParam()));
-    scene.objects.push_back(Object{"block", MeshRef{0, false}, 0, {}});
-    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -3}, 1, {}});
-    scene.build();
+    SceneDescription desc;
+    desc.ambient = vec3(1.0f);
+    desc.materials.push_back(clear_glass(0.9f));
+    desc.materials.push_back(test::plain({1.0f, 0.0f, 0.0f}, vec3(0.0f)));
+    desc.meshes.push_back(box_mesh({-10, -2, -10}, {1, 0, 10}, GetParam()));
+    desc.objects.push_back(Object{"block", MeshRef{0, false}, 0, {}});
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -3}, 1, {}});
+    const Scene scene(std::move(desc));
     const float a = glm::radians(60.0f);
     const Ray ray{{-std::sin(a), std::cos(a), 0.0f}, {std::sin(a), -std::cos(a), 0.0f}};
     RayCounts counts;
@@ -289,20 +287,18 @@ TEST_P(GlassWinding, TotalInternalReflectionReflectsInsteadOfGoingBlack) {
 // rays at the inner ball.
 TEST(Refraction, GlassInGlassOfTheSameIndexIsInvisible) {
     const auto scene_with = [](bool inner) {
-        Scene scene;
-        scene.camera = test::axis_camera({0, 0, 6}, 41);
-        scene.ambient = vec3(1.0f);
-        scene.materials.push_back(clear_glass(1.0f));
-        scene.materials.push_back(test::plain(vec3(0.0f), vec3(1.0f)));
-        scene.lights.push_back(Light{Light::Type::kPoint, {0.5f, 0.5f, -3.0f}, {}, vec3(1.0f)});
-        scene.objects.push_back(Object{"outer", Sphere{{0, 0, 0}, 1.0f}, 0, {}});
-        if (inner)
-            scene.objects.push_back(Object{"inner", Sphere{{0.3f, 0.2f, 0.1f}, 0.5f}, 0, {}});
-        scene.objects.push_back(Object{"wall", Plane{{0, 0, 1}, -4}, 1, {}});
-        scene.build();
-        return scene;
+        SceneDescription desc;
+        desc.camera = test::axis_camera({0, 0, 6}, 41);
+        desc.ambient = vec3(1.0f);
+        desc.materials.push_back(clear_glass(1.0f));
+        desc.materials.push_back(test::plain(vec3(0.0f), vec3(1.0f)));
+        desc.lights.push_back(Light{Light::Type::kPoint, {0.5f, 0.5f, -3.0f}, {}, vec3(1.0f)});
+        desc.objects.push_back(Object{"outer", Sphere{{0, 0, 0}, 1.0f}, 0, {}});
+        if (inner) desc.objects.push_back(Object{"inner", Sphere{{0.3f, 0.2f, 0.1f}, 0.5f}, 0, {}});
+        desc.objects.push_back(Object{"wall", Plane{{0, 0, 1}, -4}, 1, {}});
+        return desc;
     };
-    const Scene alone = scene_with(false), nested = scene_with(true);
+    const Scene alone(scene_with(false)), nested(scene_with(true));
     TraceOptions options;
     options.max_depth = 8;
     int bent_by_the_inner_ball = 0;
@@ -365,12 +361,12 @@ TEST(Checker, CellsAlternateByTheSumOfTheirIndices) {
 // A point light exactly at the surface point gives that point ambient light only, not
 // NaN (normalising the zero vector to the light).
 TEST(Phong, LightOnTheSurfaceGivesAmbientNotNaN) {
-    Scene scene;
-    scene.ambient = vec3(0.25f);
-    scene.materials.push_back(test::plain(vec3(1.0f), vec3(0.8f), vec3(0.5f), 8.0f));
-    scene.lights.push_back(Light{Light::Type::kPoint, {0, 0, 0}, {}, vec3(1.0f)});
-    scene.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
-    scene.build();
+    SceneDescription desc;
+    desc.ambient = vec3(0.25f);
+    desc.materials.push_back(test::plain(vec3(1.0f), vec3(0.8f), vec3(0.5f), 8.0f));
+    desc.lights.push_back(Light{Light::Type::kPoint, {0, 0, 0}, {}, vec3(1.0f)});
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
+    const Scene scene(std::move(desc));
     for (bool shadows : {true, false}) {  // with feelers, and with no feeler to stop it
         TraceOptions options;
         options.shadows = shadows;

@@ -140,16 +140,16 @@ namespace {
 // and records a hit on its big back triangle, with its barycentrics; the sphere in front
 // is nearer and replaces the record whole: no triangle index or barycentrics stay behind.
 TEST(Scene, ASphereHitReplacesAnEarlierMeshHitWhole) {
-    Scene scene;
-    scene.materials.push_back(Material{});
+    SceneDescription desc;
+    desc.materials.push_back(Material{});
     TriangleMesh mesh;
-    mesh.positions = {{3, 3, 5}, {3.1f, 3, 5}, {3, 3.1f, 5},
+    mesh.positions = {{3, 3, 5},       {3.1f, 3, 5},   {3, 3.1f, 5},
                       {-10, -10, -10}, {10, -10, -10}, {0, 10, -10}};
     mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
-    scene.meshes.push_back(std::move(mesh));
-    scene.objects.push_back(Object{"mesh", MeshRef{0, false}, 0, {}});
-    scene.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
-    scene.build();
+    desc.meshes.push_back(std::move(mesh));
+    desc.objects.push_back(Object{"mesh", MeshRef{0, false}, 0, {}});
+    desc.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
+    const Scene scene(std::move(desc));
     const Ray ray{{0.2f, 0.1f, 10}, {0, 0, -1}};
     Hit mesh_only;
     ASSERT_TRUE(scene.intersect_object(0, ray, mesh_only));
@@ -175,8 +175,8 @@ namespace {
 // the same hit, bit for bit: the same watertight test, the same t bound.
 TEST(Triangle, ItemBufferTestAgreesWithTraversalBitForBit) {
     LoadedScene loaded = load_scene(test::source_dir() / "assets/models/stanford-bunny.obj");
-    Scene& scene = loaded.scene;
-    scene.build();
+    SceneDescription& desc = loaded.scene;
+    const Scene scene(std::move(desc));
     const TriangleMesh& mesh = scene.meshes[0];
     std::uint32_t state = 12345;
     const auto uniform = [&] {
@@ -185,7 +185,8 @@ TEST(Triangle, ItemBufferTestAgreesWithTraversalBitForBit) {
     };
     int compared = 0;
     for (int i = 0; i < 20000; ++i) {
-        const auto prim = static_cast<std::uint32_t>(uniform() * static_cast<float>(mesh.triangles.size()));
+        const auto prim =
+            static_cast<std::uint32_t>(uniform() * static_cast<float>(mesh.triangles.size()));
         const glm::uvec3 idx = mesh.triangles[prim];
         float u = 0.05f + 0.45f * uniform(), v = 0.05f + 0.45f * uniform();
         const vec3 target = (1.0f - u - v) * mesh.positions[idx[0]] + u * mesh.positions[idx[1]] +

@@ -10,19 +10,18 @@
 namespace rt {
 namespace {
 
-Scene one_object(Shape shape, const glm::mat4& m) {
-    Scene scene;
-    scene.materials.push_back(Material{});
-    scene.objects.push_back(Object{"o", shape, 0, Transform::from_matrix(m)});
-    scene.build();
-    return scene;
+SceneDescription one_object(Shape shape, const glm::mat4& m) {
+    SceneDescription desc;
+    desc.materials.push_back(Material{});
+    desc.objects.push_back(Object{"o", shape, 0, Transform::from_matrix(m)});
+    return desc;
 }
 
 TEST(Transform, EllipsoidNormalsMatchTheAnalyticNormal) {
     // A unit sphere scaled by (3, 1, 1) is the ellipsoid x^2/9 + y^2 + z^2 = 1; its normal at
     // (3 cos a, sin a, 0) is the gradient (2x/9, 2y, 2z), i.e. along (cos a / 3, sin a, 0):
     // the tutorial's M^-T n with n = (cos a, sin a, 0).
-    const Scene scene = one_object(Sphere{}, glm::scale(glm::mat4(1.0f), vec3(3, 1, 1)));
+    const Scene scene(one_object(Sphere{}, glm::scale(glm::mat4(1.0f), vec3(3, 1, 1))));
     for (float a = 0.1f; a < 3.0f; a += 0.2f) {
         const vec3 p{3.0f * std::cos(a), std::sin(a), 0.0f};
         const vec3 expected = glm::normalize(vec3(std::cos(a) / 3.0f, std::sin(a), 0.0f));
@@ -44,7 +43,7 @@ TEST(Transform, RotatedNonUniformScaleNormalsMatchTheTangentsCrossProduct) {
     const glm::mat4 m = glm::rotate(glm::mat4(1.0f), glm::radians(40.0f), vec3(0, 1, 0)) *
                         glm::rotate(glm::mat4(1.0f), glm::radians(30.0f), vec3(0, 0, 1)) *
                         glm::scale(glm::mat4(1.0f), vec3(3.0f, 1.0f, 0.5f));
-    const Scene scene = one_object(Sphere{}, m);
+    const Scene scene(one_object(Sphere{}, m));
     const glm::mat3 l(m);
     for (float a = 0.3f; a < 6.0f; a += 0.7f) {
         for (float b = -1.2f; b < 1.3f; b += 0.6f) {
@@ -69,7 +68,7 @@ TEST(Transform, TStaysTheSameUnderScaleAndTranslation) {
     // Sphere scaled by 2 and moved to z = -10: a ray from the origin meets it at z = -8.
     const glm::mat4 m =
         glm::translate(glm::mat4(1.0f), vec3(0, 0, -10)) * glm::scale(glm::mat4(1.0f), vec3(2.0f));
-    const Scene scene = one_object(Sphere{}, m);
+    const Scene scene(one_object(Sphere{}, m));
     Hit hit;
     ASSERT_TRUE(scene.intersect(Ray{{0, 0, 0}, {0, 0, -1}}, hit));
     EXPECT_NEAR(hit.t, 8.0f, 1e-5f);
@@ -79,8 +78,8 @@ TEST(Transform, TStaysTheSameUnderScaleAndTranslation) {
 }
 
 TEST(Transform, TranslationLeavesNormalsAlone) {
-    const Scene scene = one_object(Triangle{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}},
-                                   glm::translate(glm::mat4(1.0f), vec3(5, 7, -3)));
+    const Scene scene(one_object(Triangle{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}},
+                                 glm::translate(glm::mat4(1.0f), vec3(5, 7, -3))));
     const Ray ray{{5, 7, 10}, {0, 0, -1}};
     Hit hit;
     ASSERT_TRUE(scene.intersect(ray, hit));
@@ -91,8 +90,8 @@ TEST(Transform, TranslationLeavesNormalsAlone) {
 
 TEST(Transform, RotationTurnsTheNormal) {
     // A y-up plane turned 90 degrees about z faces -x.
-    const Scene scene = one_object(
-        Plane{{0, 1, 0}, 0}, glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), vec3(0, 0, 1)));
+    const Scene scene(one_object(Plane{{0, 1, 0}, 0},
+                                 glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), vec3(0, 0, 1))));
     const Ray ray{{-4, 0.3f, 0.2f}, {1, 0, 0}};
     Hit hit;
     ASSERT_TRUE(scene.intersect(ray, hit));

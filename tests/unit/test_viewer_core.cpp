@@ -131,7 +131,6 @@ TEST(CameraController, ZoomPanFlyAndReset) {
 
 std::shared_ptr<const rt::Scene> tutorial() {
     rt::LoadedScene loaded = rt::load_scene(rt::test::scene_path("tutorial.json"));
-    loaded.scene.build();
     return std::make_shared<const rt::Scene>(std::move(loaded.scene));
 }
 
