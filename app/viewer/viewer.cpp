@@ -58,7 +58,7 @@ Viewer::Viewer(const ViewerOptions& options)
                               options.up)),  // a bad file fails before any window opens
       window_(options.width, options.height, "rtview"),
       scenes_(scenes_dir(RTVIEW_ASSET_DIR)),
-      view_(options.view) {
+      display_{.view = options.view} {
     GLFWwindow* w = window_.handle();
     glfwSetWindowUserPointer(w, this);
     // Every event comes here first; what ImGui gets is decided in on_key and below.
@@ -211,7 +211,7 @@ void Viewer::collect_trace() {
 }
 
 View Viewer::shown_view() const {
-    if (!flicker_) return view_;
+    if (!display_.flicker) return display_.view;
     // Holding Tab alternates raster and traced four times a second.
     const auto phase = static_cast<long long>(glfwGetTime() * 4.0);
     return phase % 2 == 0 ? View::kRaster : View::kTrace;
@@ -221,8 +221,8 @@ void Viewer::draw_views(int width, int height) {
     const rt::Camera camera = controller_->camera(width, height);
     rt::gl::CompositeInputs in;
     in.view = shown_view();
-    in.divider = divider_;
-    in.swap = swap_;
+    in.divider = display_.divider;
+    in.swap = display_.swap;
     in.diff_scale = settings_.diff_scale;
     in.traced = traced_texture_.id();
     if (in.view != View::kTrace && in.view != View::kItemBuffer) {
@@ -256,11 +256,11 @@ void Viewer::frame(float dt) {
         save_view(fb.x, fb.y);
     }
     window_.begin_imgui_frame();
-    if (panel_) {  // H hides the panel and the labels: a clean view
+    if (display_.panel) {  // H hides the panel and the labels: a clean view
         draw_panel();
         draw_overlays(fb.x, fb.y);
     }
-    if (help_) draw_help();
+    if (display_.help) draw_help();
     window_.end_imgui_frame();
     rt::gl::check("Viewer::frame");
     window_.swap_buffers();
@@ -285,7 +285,7 @@ int Viewer::run() {
 }
 
 void Viewer::set_view(View view) {
-    view_ = view;
+    display_.view = view;
     std::printf("view: %s\n", view_label(view));
     std::fflush(stdout);
     update_title();
@@ -293,7 +293,7 @@ void Viewer::set_view(View view) {
 
 void Viewer::update_title() {
     std::string title = "rtview - " + std::filesystem::path(scenes_.current()).filename().string() +
-                        " - " + view_label(view_);
+                        " - " + view_label(display_.view);
     title += stats_.level == 1 ? " - traced" : " - tracing";
     if (title != title_) window_.set_title(title);
     title_ = title;
@@ -312,8 +312,8 @@ void Viewer::on_key(int key, int scancode, int action, int mods) {
     // A held control follows its key alone: Tab pressed with Shift and let go without it
     // (or the other way round) still ends the flicker.
     if (action_of(key, 0) == Action::kFlicker && (action == GLFW_PRESS || action == GLFW_RELEASE)) {
-        flicker_ = action == GLFW_PRESS;
-        std::printf("flicker: %s\n", flicker_ ? "on" : "off");
+        display_.flicker = action == GLFW_PRESS;
+        std::printf("flicker: %s\n", display_.flicker ? "on" : "off");
         std::fflush(stdout);
     }
     if (action != GLFW_PRESS) return;
@@ -326,18 +326,18 @@ void Viewer::on_key(int key, int scancode, int action, int mods) {
 void Viewer::perform(Action action) {
     switch (action) {
         case Action::kSwap:
-            swap_ = !swap_;
-            std::printf("swap: %s\n", swap_ ? "traced left" : "raster left");
+            display_.swap = !display_.swap;
+            std::printf("swap: %s\n", display_.swap ? "traced left" : "raster left");
             std::fflush(stdout);
             break;
         case Action::kPanel:
-            panel_ = !panel_;
+            display_.panel = !display_.panel;
             break;
         case Action::kResetCamera:
             controller_->reset();
             break;
         case Action::kHelp:
-            help_ = !help_;
+            display_.help = !display_.help;
             break;
         case Action::kSave:
             save_requested_ = true;
@@ -366,8 +366,8 @@ void Viewer::perform(Action action) {
 // Esc closes what is open (the help, a drop-down); with nothing open it asks, and a
 // second Esc within kQuitSeconds quits: one keystroke never loses the camera and settings.
 void Viewer::on_escape() {
-    if (help_) {
-        help_ = false;
+    if (display_.help) {
+        display_.help = false;
     } else if (ImGui::IsPopupOpen(nullptr,
                                   ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) {
         ImGui::ClosePopupToLevel(0, true);
@@ -388,30 +388,31 @@ void Viewer::quit(const char* how) {
 
 void Viewer::on_mouse_button(int button, int action) {
     if (action == GLFW_RELEASE) {
-        orbiting_ = panning_ = dragging_divider_ = false;
+        drag_.orbit = drag_.pan = drag_.divider = false;
         return;
     }
     if (ImGui::GetIO().WantCaptureMouse) return;
     int width = 1, height = 1;
     glfwGetWindowSize(window_.handle(), &width, &height);
     if (button == GLFW_MOUSE_BUTTON_LEFT) {
-        const bool near_divider = view_ == View::kSplit &&
-                                  std::abs(cursor_.x - static_cast<double>(divider_) * width) < 8.0;
-        (near_divider ? dragging_divider_ : orbiting_) = true;
+        const bool near_divider =
+            display_.view == View::kSplit &&
+            std::abs(drag_.cursor.x - static_cast<double>(display_.divider) * width) < 8.0;
+        (near_divider ? drag_.divider : drag_.orbit) = true;
     } else {
-        panning_ = true;  // right or middle
+        drag_.pan = true;  // right or middle
     }
 }
 
 void Viewer::on_cursor(double x, double y) {
-    const glm::dvec2 delta = glm::dvec2(x, y) - cursor_;
-    cursor_ = {x, y};
+    const glm::dvec2 delta = glm::dvec2(x, y) - drag_.cursor;
+    drag_.cursor = {x, y};
     int w = 1, h = 1;
     glfwGetWindowSize(window_.handle(), &w, &h);
-    if (dragging_divider_)
-        divider_ = std::clamp(static_cast<float>(x / std::max(1, w)), 0.0f, 1.0f);
-    if (orbiting_) controller_->orbit(static_cast<float>(delta.x), static_cast<float>(delta.y));
-    if (panning_) controller_->pan(static_cast<float>(delta.x), static_cast<float>(delta.y), h);
+    if (drag_.divider)
+        display_.divider = std::clamp(static_cast<float>(x / std::max(1, w)), 0.0f, 1.0f);
+    if (drag_.orbit) controller_->orbit(static_cast<float>(delta.x), static_cast<float>(delta.y));
+    if (drag_.pan) controller_->pan(static_cast<float>(delta.x), static_cast<float>(delta.y), h);
 }
 
 void Viewer::on_scroll(double dy) {

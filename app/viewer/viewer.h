@@ -56,6 +56,22 @@ struct FrameStats {
     int level = 0;                    // of the traced image on screen
 };
 
+// What is on screen and how: display only, never a reason to trace again.
+struct Display {
+    View view = View::kSplit;
+    float divider = 0.5f;  // of the split view, as a share of the width
+    bool swap = false;     // traced on the left
+    bool flicker = false;  // Tab held
+    bool help = false;
+    bool panel = true;  // the panel and the labels (H)
+};
+
+// A mouse drag under way, and where the cursor is.
+struct Drag {
+    bool orbit = false, pan = false, divider = false;
+    glm::dvec2 cursor{0.0, 0.0};
+};
+
 class Viewer {
   public:
     explicit Viewer(const ViewerOptions& options);  // throws rt::Error
@@ -112,21 +128,14 @@ class Viewer {
     std::uint64_t request_id_ = 0;
     FrameStats stats_;
 
-    View view_ = View::kSplit;
-    float divider_ = 0.5f;
-    bool swap_ = false;
-    bool help_ = false;
+    Display display_;
     std::optional<rt::Stopwatch> quit_asked_;  // since the first Esc
-    bool panel_ = true;
-    glm::vec2 panel_pos_{10.0f, 10.0f};  // where the panel belongs (the user's, once moved)
-    bool panel_small_ = false;           // collapsed because the window is small
-    bool flicker_ = false;
+    glm::vec2 panel_pos_{10.0f, 10.0f};        // where the panel belongs (the user's, once moved)
+    bool panel_small_ = false;                 // collapsed because the window is small
     bool save_requested_ = false;
     std::string error_;
     std::string title_;
-
-    bool orbiting_ = false, panning_ = false, dragging_divider_ = false;
-    glm::dvec2 cursor_{0.0, 0.0};
+    Drag drag_;
 };
 
 }  // namespace rt::viewer

@@ -108,14 +108,15 @@ void Viewer::draw_panel() {
     section("view");
     for (std::size_t i = 0; i < kViewCount; ++i) {
         const std::string label = std::to_string(i + 1) + " " + kViews[i].label;
-        if (ImGui::RadioButton(label.c_str(), view_ == kViews[i].value)) set_view(kViews[i].value);
+        if (ImGui::RadioButton(label.c_str(), display_.view == kViews[i].value))
+            set_view(kViews[i].value);
         if (i % 3 != 2 && i + 1 != kViewCount) ImGui::SameLine();
     }
-    if (view_ == View::kSplit) {
-        ImGui::Checkbox("swap sides (X)", &swap_);
-        ImGui::SliderFloat("divider", &divider_, 0.0f, 1.0f, "%.3f", kClamp);
+    if (display_.view == View::kSplit) {
+        ImGui::Checkbox("swap sides (X)", &display_.swap);
+        ImGui::SliderFloat("divider", &display_.divider, 0.0f, 1.0f, "%.3f", kClamp);
     }
-    if (view_ == View::kDiff)
+    if (display_.view == View::kDiff)
         ImGui::SliderFloat("diff scale", &settings_.diff_scale, 0.01f, 1.0f, "%.3f", kClamp);
 
     section("statistics");
@@ -161,9 +162,9 @@ void Viewer::draw_overlays(int width, int height) {
               "Press Esc again to quit (Ctrl+Q quits at once)");
     const View view = shown_view();
     if (view == View::kSplit) {
-        const float x = divider_ * w;
-        label(draw, ImVec2(x - 110.0f, h - 30.0f), swap_ ? "ray traced" : "OpenGL");
-        label(draw, ImVec2(x + 12.0f, h - 30.0f), swap_ ? "OpenGL" : "ray traced");
+        const float x = display_.divider * w;
+        label(draw, ImVec2(x - 110.0f, h - 30.0f), display_.swap ? "ray traced" : "OpenGL");
+        label(draw, ImVec2(x + 12.0f, h - 30.0f), display_.swap ? "OpenGL" : "ray traced");
     } else if (view == View::kDiff) {
         // The colour map and its scale, down the right-hand side.
         const float x0 = w - 40.0f, y0 = 40.0f, y1 = h - 40.0f;
@@ -188,7 +189,8 @@ void Viewer::draw_help() {
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, screen.y * 0.5f), ImGuiCond_Always,
                             ImVec2(0.5f, 0.5f));
-    ImGui::Begin("keys", &help_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin("keys", &display_.help,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
     std::string view_keys, view_labels;
     for (std::size_t i = 0; i < kViewCount; ++i) {
         view_keys += (i ? " " : "") + std::to_string(i + 1);

@@ -40,7 +40,7 @@ void Viewer::save_view(int width, int height) {
             for (int k = 0; k < 3; ++k)
                 view.pixels[i][k] = rt::srgb_decode(static_cast<float>(bytes[3 * i + k]) / 255.0f);
         write(view, prefix + ".view.png");
-        if (view_ == View::kSplit || view_ == View::kDiff) {
+        if (display_.view == View::kSplit || display_.view == View::kDiff) {
             const rt::Camera camera =
                 controller_->camera(traced_image_.width, traced_image_.height);
             const rt::Image raster = raster_->render(camera);
