@@ -113,6 +113,9 @@ mutant keys-reach-imgui-focus app/viewer/viewer.cpp \
     'window_.forward_key(key, scancode, action, mods);
     if (ImGui::GetIO().WantCaptureKeyboard) return;' \
     rtview ctest -R '^gui[.]' --output-on-failure
+mutant input-events-collapse-within-a-frame app/gl/window.cpp \
+    'if (std::any_of(changed_.begin(), changed_.end(), same)) break;' '(void)same;' \
+    rtview ctest -R '^gui[.]' --output-on-failure
 mutant typed-slider-values-unclamped app/viewer/viewer_panel.cpp \
     'constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;' \
     'constexpr ImGuiSliderFlags kClamp = 0;' rtview ctest -R '^gui[.]' --output-on-failure

@@ -89,19 +89,41 @@ void Window::init_imgui() {
 }
 
 void Window::forward_key(int key, int scancode, int action, int mods) {
-    const auto seen = std::find(pressed_this_frame_.begin(), pressed_this_frame_.end(), key);
-    if (action == GLFW_RELEASE && seen != pressed_this_frame_.end()) {
-        held_releases_.push_back({key, scancode, action, mods});
+    if (action == GLFW_REPEAT && queued_.empty()) {  // a held key's repeat changes no state
+        ImGui_ImplGlfw_KeyCallback(window_, key, scancode, action, mods);
         return;
     }
-    if (action == GLFW_PRESS) pressed_this_frame_.push_back(key);
-    ImGui_ImplGlfw_KeyCallback(window_, key, scancode, action, mods);
+    queued_.push_back({InputEvent::kKey, key, scancode, action, mods});
+    deliver_queued();
 }
-void Window::forward_char(GLFWwindow* window, unsigned int c) {
-    ImGui_ImplGlfw_CharCallback(window, c);
+
+void Window::forward_mouse_button(int button, int action, int mods) {
+    queued_.push_back({InputEvent::kButton, button, 0, action, mods});
+    deliver_queued();
 }
-void Window::forward_mouse_button(GLFWwindow* window, int button, int action, int mods) {
-    ImGui_ImplGlfw_MouseButtonCallback(window, button, action, mods);
+
+void Window::deliver_queued() {
+    std::size_t n = 0;
+    for (; n < queued_.size(); ++n) {
+        const InputEvent& e = queued_[n];
+        if (e.kind == InputEvent::kChar) {  // text changes no state: it only keeps its place
+            ImGui_ImplGlfw_CharCallback(window_, static_cast<unsigned int>(e.code));
+            continue;
+        }
+        const auto same = [&](const InputEvent& c) { return c.kind == e.kind && c.code == e.code; };
+        if (std::any_of(changed_.begin(), changed_.end(), same)) break;  // ImGui's next frame
+        changed_.push_back(e);
+        if (e.kind == InputEvent::kButton)
+            ImGui_ImplGlfw_MouseButtonCallback(window_, e.code, e.action, e.mods);
+        else
+            ImGui_ImplGlfw_KeyCallback(window_, e.code, e.scancode, e.action, e.mods);
+    }
+    queued_.erase(queued_.begin(), queued_.begin() + static_cast<std::ptrdiff_t>(n));
+}
+
+void Window::forward_char(unsigned int c) {
+    queued_.push_back({InputEvent::kChar, static_cast<int>(c)});
+    deliver_queued();
 }
 void Window::forward_scroll(GLFWwindow* window, double dx, double dy) {
     ImGui_ImplGlfw_ScrollCallback(window, dx, dy);
@@ -111,15 +133,15 @@ void Window::begin_imgui_frame() {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    // This frame has seen this batch's presses; their held-back releases count from the next.
-    pressed_this_frame_.clear();
-    for (const KeyEvent& e : held_releases_)
-        ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
-    held_releases_.clear();
+    // ImGui has taken this frame's key and button states: the next changes may go in.
+    changed_.clear();
 }
 
 void Window::end_imgui_frame() {
     ImGui::Render();
+    // What waited goes in now, after this frame has used its text (ImGui drops typed
+    // characters at the end of a frame): keys and text then both count for the next.
+    deliver_queued();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 

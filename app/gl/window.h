@@ -29,24 +29,27 @@ class Window {
     // own callbacks decide which events reach ImGui (forward_* below), so that keys that
     // are the application's never reach ImGui's focus and text editing.
     void init_imgui();
-    // Keys reach ImGui 1.86 as a state per frame, so a press and its release within one
-    // frame (a quick tap while a frame is slow) would be lost: such a release is held
-    // back until ImGui has seen the press in a frame.
+    // Keys and mouse buttons reach ImGui 1.86 as a state per frame, so a press and its
+    // release within one frame (a quick tap or click while a frame is slow), or two clicks
+    // within one, would be lost: each key and button changes state at most once between
+    // two of ImGui's frames, and the events beyond that wait, in order, for the next.
     void forward_key(int key, int scancode, int action, int mods);
-    static void forward_char(GLFWwindow* window, unsigned int c);
-    static void forward_mouse_button(GLFWwindow* window, int button, int action, int mods);
+    void forward_mouse_button(int button, int action, int mods);
+    void forward_char(unsigned int c);  // queued with the keys, so typing keeps its order
     static void forward_scroll(GLFWwindow* window, double dx, double dy);
     void begin_imgui_frame();
     void end_imgui_frame();  // renders ImGui's draw data
     void swap_buffers();
 
   private:
-    struct KeyEvent {
-        int key, scancode, action, mods;
+    struct InputEvent {
+        enum Kind { kKey, kButton, kChar } kind;
+        int code = 0, scancode = 0, action = 0, mods = 0;  // a character: its code point
     };
+    void deliver_queued();  // as many as may reach ImGui before its next frame, in order
     GLFWwindow* window_ = nullptr;
-    std::vector<int> pressed_this_frame_;  // keys ImGui has not yet seen down in a frame
-    std::vector<KeyEvent> held_releases_;  // their releases, for after the next frame starts
+    std::vector<InputEvent> queued_;   // waiting for ImGui's next frame
+    std::vector<InputEvent> changed_;  // keys and buttons changed since ImGui's last frame
     std::string description_;
     bool imgui_ = false;
 };

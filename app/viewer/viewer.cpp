@@ -67,10 +67,10 @@ Viewer::Viewer(const ViewerOptions& options)
     });
     glfwSetCharCallback(w, [](GLFWwindow* win, unsigned int c) {
         // Characters are text only while a text field is being edited.
-        if (editing_text()) rt::gl::Window::forward_char(win, c);
+        if (editing_text()) viewer_of(win)->window_.forward_char(c);
     });
     glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int mods) {
-        rt::gl::Window::forward_mouse_button(win, button, action, mods);
+        viewer_of(win)->window_.forward_mouse_button(button, action, mods);
         viewer_of(win)->on_mouse_button(button, action);
     });
     glfwSetCursorPosCallback(

@@ -158,7 +158,7 @@ check "F5 reads the scene shown again ($shown)" test "$(log_count "^scene:")" -g
 
 # With the panel focused by a click, Tab then a digit: the digit switches the view; it is
 # never typed into a slider that Tab focused (it used to go into the threads slider).
-after "^traced:" click $SHADOWS  # (the panel is shown) ImGui's focus is on it; shadows back on
+after "^traced:" click $SHADOWS  # (the panel is shown) ImGui's focus is on it
 xdotool keydown Tab; sleep 1.5; after "^flicker: off" xdotool keyup Tab  # held: it repeats
 splits=$(log_count "^view: split")
 key 3
@@ -172,6 +172,26 @@ sleep 0.3
 after "^trace settings:" key BackSpace BackSpace BackSpace 5 4 Return
 check "max depth typed as 54 becomes 12 ($(grep "^trace settings:" "$work/app.log" | tail -n1))" \
     grep -q "max depth 12," <(grep "^trace settings:" "$work/app.log" | tail -n1)
+
+# Nine quick clicks on the shadows box, faster than frames come: each one counts (two
+# within one frame used to count once), so shadows end the other way round. Wait until no
+# new settings line has come for two seconds (the clicks reach the panel one per frame).
+settle
+before=$(grep "^trace settings:" "$work/app.log" | tail -n1 | sed -n 's/.*shadows \(o[nf]*\),.*/\1/p')
+expected=on
+[ "$before" = on ] && expected=off
+xdotool mousemove --window "$wid" $SHADOWS click --repeat 9 --delay 15 1
+lines=-1
+for _ in $(seq 40); do
+    sleep 1
+    now=$(log_count "^trace settings:")
+    [ "$now" = "$lines" ] && break
+    lines=$now
+    sleep 1
+done
+check "nine quick clicks turn shadows $expected ($(grep "^trace settings:" "$work/app.log" | tail -n1))" \
+    grep -q "shadows $expected," <(grep "^trace settings:" "$work/app.log" | tail -n1)
+after "^trace settings:" click $SHADOWS
 
 # One Esc asks; a second within two seconds quits.
 after "^Esc: press Esc again" key Escape
