@@ -43,6 +43,8 @@ struct Camera {
 
     // The same view with another resolution: keeps N and H, sets W for square pixels.
     Camera resized(int new_cols, int new_rows) const;
+
+    bool operator==(const Camera&) const = default;
 };
 
 }  // namespace rt

@@ -13,6 +13,8 @@ uniform vec3 u_viewport;      // width, height
 uniform float u_divider;
 uniform int u_swap;
 uniform float u_diff_scale;
+uniform int u_diff_mode;         // 0 heat, 1 signed, 2 per channel (app/gl/compositor.h)
+uniform float u_diff_threshold;  // > 0: show a mask of the pixels over it instead
 
 out vec4 o_colour;
 
@@ -33,9 +35,19 @@ void main() {
         colour = (left != (u_swap == 1)) ? raster : traced;
         if (abs(gl_FragCoord.x - u_divider * u_viewport.x) < 1.5) colour = vec3(1.0);
     } else if (u_view == 3) {
-        vec3 d = abs(raster - traced);
-        float t = clamp(max(d.r, max(d.g, d.b)) / u_diff_scale, 0.0, 1.0);
-        colour = srgb_encode(texture(u_heat, vec2((t * 255.0 + 0.5) / 256.0, 0.5)).rgb);
+        vec3 d = raster - traced;
+        float largest = max(abs(d.r), max(abs(d.g), abs(d.b)));
+        if (u_diff_threshold > 0.0) {
+            colour = largest > u_diff_threshold ? vec3(1.0) : 0.25 * raster;
+        } else if (u_diff_mode == 1) {
+            float l = clamp(dot(d, vec3(0.2126, 0.7152, 0.0722)) / u_diff_scale, -1.0, 1.0);
+            colour = l > 0.0 ? l * vec3(1.0, 0.25, 0.15) : -l * vec3(0.2, 0.5, 1.0);
+        } else if (u_diff_mode == 2) {
+            colour = clamp(abs(d) / u_diff_scale, 0.0, 1.0);
+        } else {
+            float t = clamp(largest / u_diff_scale, 0.0, 1.0);
+            colour = srgb_encode(texture(u_heat, vec2((t * 255.0 + 0.5) / 256.0, 0.5)).rgb);
+        }
     } else if (u_view == 4) {
         uint id = texture(u_ids, uv).r;
         int index = int(id % uint(u_palette_size));

@@ -40,6 +40,8 @@ void Compositor::draw(const CompositeInputs& in, int width, int height) {
     program_.set("u_divider", in.divider);
     program_.set("u_swap", in.swap ? 1 : 0);
     program_.set("u_diff_scale", std::max(in.diff_scale, 1e-4f));
+    program_.set("u_diff_mode", static_cast<int>(in.diff_mode));
+    program_.set("u_diff_threshold", in.diff_threshold);
     program_.set("u_palette_size", palette_.width());
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(vao_.get());

@@ -12,6 +12,13 @@ namespace rt::gl {
 // In the order of the keys 1 to 5 (the viewer relies on it).
 enum class View { kRaster, kTrace, kSplit, kDiff, kItemBuffer };
 
+// How the difference view shows raster - traced (sRGB values).
+enum class DiffMode {
+    kHeat,      // the largest channel's |difference| through the heat colour map
+    kSigned,    // luminance: red where the raster is brighter, blue where the traced is
+    kChannels,  // |difference| per channel, as a colour
+};
+
 struct CompositeInputs {
     GLuint raster = 0;       // RGBA32F, linear
     GLuint traced = 0;       // RGB32F, linear, any resolution (coarse while moving)
@@ -20,6 +27,8 @@ struct CompositeInputs {
     float divider = 0.5f;     // split: the divider's x as a share of the width
     bool swap = false;        // split: traced on the left
     float diff_scale = 0.5f;  // diff: the difference shown at the top of the colour map
+    DiffMode diff_mode = DiffMode::kHeat;
+    float diff_threshold = 0.0f;  // diff: > 0: a mask, white where a channel differs by more
 };
 
 class Compositor {

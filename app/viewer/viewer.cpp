@@ -114,6 +114,10 @@ void Viewer::install(std::shared_ptr<const rt::Scene> scene, const std::string& 
     traced_image_.pixels[0] = scene_->background;
     traced_texture_.upload(traced_image_);
     stats_ = FrameStats{};
+    raster_camera_.reset();
+    ids_camera_.reset();
+    submitted_key_.reset();
+    shown_key_.reset();
     error_.clear();
     std::printf("scene: %s (%zu objects, %zu triangles)\n", path.c_str(), scene_->objects.size(),
                 scene_->triangle_count());
@@ -181,8 +185,10 @@ void Viewer::update_trace() {
         request.item_buffer =
             std::make_shared<rt::ItemBuffer>(raster_->render_item_buffer(request.camera));
         stats_.item_buffer_ms = watch.milliseconds();
+        ids_camera_.reset();  // the pass drew over the item-buffer view's texture
     }
     request.id = ++request_id_;
+    submitted_key_ = key;
     tracer_.submit(std::move(request));
 }
 
@@ -192,6 +198,9 @@ void Viewer::collect_trace() {
     traced_image_ = std::move(result->image);
     traced_texture_.upload(traced_image_);
     stats_.level = result->level;
+    stats_.shown = result->stats;
+    stats_.trace_ms.add(static_cast<float>(1e3 * result->stats.seconds));
+    shown_key_ = submitted_key_;
     if (result->level == 1) {
         std::printf("traced: %dx%d in %.3f s (primary %.3f s, secondary %.3f s), %.2f Mrays/s\n",
                     traced_image_.width, traced_image_.height, result->stats.seconds,
@@ -217,28 +226,58 @@ View Viewer::shown_view() const {
     return phase % 2 == 0 ? View::kRaster : View::kTrace;
 }
 
+bool Viewer::traced_stale() const { return !shown_key_ || !(*shown_key_ == trace_key()); }
+
+GLuint Viewer::raster_texture(const rt::Camera& camera) {
+    if (raster_camera_ != camera) {
+        const rt::Stopwatch watch;
+        raster_texture_ = raster_->render_to_texture(camera).texture();
+        glFinish();  // so that the time is the GPU's too
+        stats_.raster_ms = watch.milliseconds();
+        stats_.raster_width = camera.cols;
+        stats_.raster_height = camera.rows;
+        raster_camera_ = camera;
+    }
+    return raster_texture_;
+}
+
+GLuint Viewer::item_buffer_texture(const rt::Camera& camera) {
+    if (ids_camera_ != camera) {
+        ids_texture_ = raster_->render_item_buffer_to_texture(camera).texture();
+        ids_camera_ = camera;
+    }
+    return ids_texture_;
+}
+
+// The raster and item-buffer passes run again only when their camera (or the window)
+// changes: at rest a frame is the composite and the panel. The difference view compares
+// like with like: while the traced image is coarser than the window, the raster is drawn
+// at the traced image's size (the same pixel centres), and the view says so.
 void Viewer::draw_views(int width, int height) {
-    const rt::Camera camera = controller_->camera(width, height);
     rt::gl::CompositeInputs in;
     in.view = shown_view();
     in.divider = display_.divider;
     in.swap = display_.swap;
     in.diff_scale = settings_.diff_scale;
+    in.diff_mode = display_.diff_mode;
+    in.diff_threshold = display_.diff_threshold;
     in.traced = traced_texture_.id();
     if (in.view != View::kTrace && in.view != View::kItemBuffer) {
-        const rt::Stopwatch watch;
-        in.raster = raster_->render_to_texture(camera).texture();
-        glFinish();  // so that the time is the GPU's too
-        stats_.raster_ms = watch.milliseconds();
+        const bool coarse = traced_image_.width < width || traced_image_.height < height;
+        in.raster =
+            raster_texture(in.view == View::kDiff && coarse
+                               ? controller_->camera(traced_image_.width, traced_image_.height)
+                               : controller_->camera(width, height));
     }
     if (in.view == View::kItemBuffer)
-        in.item_buffer = raster_->render_item_buffer_to_texture(camera).texture();
+        in.item_buffer = item_buffer_texture(controller_->camera(width, height));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
     compositor_->draw(in, width, height);
 }
 
 void Viewer::frame(float dt) {
+    const rt::Stopwatch watch;
     const glm::ivec2 fb = window_.framebuffer_size();
     if (const std::optional<std::string> next = scenes_.take()) load(*next);
     if (!ImGui::GetIO().WantCaptureKeyboard) {
@@ -256,14 +295,13 @@ void Viewer::frame(float dt) {
         save_view(fb.x, fb.y);
     }
     window_.begin_imgui_frame();
-    if (display_.panel) {  // H hides the panel and the labels: a clean view
-        draw_panel();
-        draw_overlays(fb.x, fb.y);
-    }
+    if (display_.panel) draw_panel();
+    draw_overlays(fb.x, fb.y);  // labels (L), light markers, messages
     if (display_.help) draw_help();
     window_.end_imgui_frame();
     rt::gl::check("Viewer::frame");
     window_.swap_buffers();
+    stats_.frame_ms.add(static_cast<float>(watch.milliseconds()));
 }
 
 int Viewer::run() {
@@ -294,7 +332,7 @@ void Viewer::set_view(View view) {
 void Viewer::update_title() {
     std::string title = "rtview - " + std::filesystem::path(scenes_.current()).filename().string() +
                         " - " + view_label(display_.view);
-    title += stats_.level == 1 ? " - traced" : " - tracing";
+    title += stats_.level == 1 && !traced_stale() ? " - traced" : " - tracing";
     if (title != title_) window_.set_title(title);
     title_ = title;
 }
@@ -332,6 +370,9 @@ void Viewer::perform(Action action) {
             break;
         case Action::kPanel:
             display_.panel = !display_.panel;
+            break;
+        case Action::kLabels:
+            display_.labels = !display_.labels;
             break;
         case Action::kResetCamera:
             controller_->reset();

@@ -4,6 +4,7 @@
 // panel. The window only reads the images the tracer publishes; the tracer never knows
 // about the window.
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -17,11 +18,14 @@
 #include "app/gl/texture.h"
 #include "app/gl/window.h"
 #include "app/viewer/camera_controller.h"
+#include "app/viewer/frame_history.h"
 #include "app/viewer/keys.h"
 #include "app/viewer/refinement.h"
 #include "app/viewer/scene_switcher.h"
 #include "app/viewer/trace_job.h"
 #include "core/stopwatch.h"
+
+struct ImDrawList;
 
 namespace rt::viewer {
 
@@ -48,12 +52,17 @@ struct Settings {
     bool operator==(const Settings&) const = default;
 };
 
-// What the panel shows: the last frames' costs.
+// What the panel shows. Each figure belongs to something named: the raster pass to the
+// camera and size it was last drawn for, the traced figures to the image on screen.
 struct FrameStats {
-    double raster_ms = 0.0;
+    double raster_ms = 0.0;  // the last raster pass (drawn again only when its camera changes)
+    int raster_width = 0, raster_height = 0;
+    int level = 0;                    // of the traced image on screen (0: none yet)
+    rt::RenderStats shown;            // the traced image on screen: its level's trace
     std::optional<TraceResult> full;  // the last full-resolution trace (image moved out)
     double item_buffer_ms = 0.0;      // raster item-buffer pass with read-back
-    int level = 0;                    // of the traced image on screen
+    FrameHistory frame_ms;            // the UI thread's frames
+    FrameHistory trace_ms;            // each traced level, as it arrived
 };
 
 // What is on screen and how: display only, never a reason to trace again.
@@ -63,7 +72,11 @@ struct Display {
     bool swap = false;     // traced on the left
     bool flicker = false;  // Tab held
     bool help = false;
-    bool panel = true;  // the panel and the labels (H)
+    bool panel = true;    // H
+    bool labels = true;   // L: what each part of the view is
+    bool lights = false;  // markers at the point lights
+    rt::gl::DiffMode diff_mode = rt::gl::DiffMode::kHeat;
+    float diff_threshold = 0.0f;  // > 0: the difference view is a mask of pixels over it
 };
 
 // A mouse drag under way, and where the cursor is.
@@ -86,7 +99,8 @@ class Viewer {
     void on_drop(const std::string& path);
 
   private:
-    static constexpr double kQuitSeconds = 2.0;  // the second Esc within this quits
+    static constexpr double kQuitSeconds = 2.0;     // the second Esc within this quits
+    static constexpr double kMessageSeconds = 6.0;  // how long "saved: ..." stays
     void on_escape();
     void quit(const char* how);
     bool load(const std::string& path);  // on failure: false, error_ set, current scene kept
@@ -99,7 +113,18 @@ class Viewer {
     void log_trace_settings(const TraceKey& key);
     void collect_trace();
     void draw_views(int width, int height);
+    GLuint raster_texture(const rt::Camera& camera);  // drawn again only for a new camera
+    GLuint item_buffer_texture(const rt::Camera& camera);
+    bool traced_stale() const;  // the traced image on screen is of another camera or settings
     void draw_panel();
+    void draw_open_field();
+    void draw_diff_controls();
+    void draw_statistics();
+    void draw_item_legend();
+    void draw_raster_legend();
+    void draw_light_markers(ImDrawList* draw, int width, int height, float scale);
+    std::string traced_label() const;
+    std::string diff_label(int width) const;
     void keep_panel_inside();
     void draw_overlays(int width, int height);
     void draw_help();
@@ -126,14 +151,22 @@ class Viewer {
     std::optional<TraceKey> logged_settings_;
     rt::Stopwatch clock_;  // the viewer's time, for the schedule
     std::uint64_t request_id_ = 0;
+    std::optional<TraceKey> submitted_key_;  // of request_id_
+    std::optional<TraceKey> shown_key_;      // of the traced image on screen
     FrameStats stats_;
+    std::optional<rt::Camera> raster_camera_, ids_camera_;  // what the textures hold
+    GLuint raster_texture_ = 0, ids_texture_ = 0;
 
     Display display_;
     std::optional<rt::Stopwatch> quit_asked_;  // since the first Esc
     glm::vec2 panel_pos_{10.0f, 10.0f};        // where the panel belongs (the user's, once moved)
     bool panel_small_ = false;                 // collapsed because the window is small
     bool save_requested_ = false;
+    std::string saved_;  // what the last save wrote, shown for a while
+    std::optional<rt::Stopwatch> saved_at_;
     std::string error_;
+    std::array<char, 1024> open_path_{};        // the panel's path field
+    std::vector<std::string> open_candidates_;  // its Tab completions
     std::string title_;
     Drag drag_;
 };

@@ -1,11 +1,14 @@
-// The Dear ImGui side of the viewer: the panel, the labels over the views, the keys.
+// The viewer's panel (the statistics and legends are in viewer_stats.cpp, the labels over
+// the view in viewer_overlays.cpp) and the help.
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <thread>
 
 #include <imgui.h>
 
 #include "app/viewer/keys.h"
+#include "app/viewer/panel_widgets.h"
 #include "app/viewer/viewer.h"
 #include "app/viewer/views.h"
 #include "core/compare.h"
@@ -14,22 +17,39 @@
 namespace rt::viewer {
 namespace {
 
-ImU32 heat_u32(float t) {
-    const rt::vec3 c = rt::heat_colour(t);
-    return ImGui::GetColorU32(
-        ImVec4(rt::srgb_encode(c.x), rt::srgb_encode(c.y), rt::srgb_encode(c.z), 1.0f));
-}
+// Every slider clamps what is typed into it (Ctrl+click) to its range, too.
+constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
 
-void section(const char* title) {
-    ImGui::Separator();
-    ImGui::TextDisabled("%s", title);
-}
-
-void label(ImDrawList* draw, ImVec2 at, const char* text) {
-    const ImVec2 size = ImGui::CalcTextSize(text);
-    draw->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2),
-                        IM_COL32(0, 0, 0, 170), 4.0f);
-    draw->AddText(at, IM_COL32(255, 255, 255, 255), text);
+// Tab in the open field: the longest completion of what is typed, among the folders and
+// the scene and mesh files of its folder; `user` collects the candidates to show.
+int complete_path(ImGuiInputTextCallbackData* data) {
+    auto& candidates = *static_cast<std::vector<std::string>*>(data->UserData);
+    candidates.clear();
+    const std::string typed(data->Buf, static_cast<std::size_t>(data->BufTextLen));
+    const auto slash = typed.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : typed.substr(0, slash + 1);
+    const std::string prefix = slash == std::string::npos ? typed : typed.substr(slash + 1);
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+        std::string name = e.path().filename().string();
+        const std::string ext = e.path().extension().string();
+        const bool dir_entry = e.is_directory(ec);
+        if (name.rfind(prefix, 0) != 0 || (name[0] == '.' && prefix.empty())) continue;
+        if (!dir_entry && ext != ".json" && ext != ".obj") continue;
+        candidates.push_back(dir_entry ? name + "/" : name);
+    }
+    std::sort(candidates.begin(), candidates.end());
+    if (candidates.empty()) return 0;
+    std::string common = candidates.front();
+    for (const std::string& c : candidates)
+        common.resize(static_cast<std::size_t>(
+            std::mismatch(common.begin(), common.end(), c.begin(), c.end()).first -
+            common.begin()));
+    const std::string completed = (slash == std::string::npos ? "" : dir) + common;
+    data->DeleteChars(0, data->BufTextLen);
+    data->InsertChars(0, completed.c_str());
+    if (candidates.size() == 1) candidates.clear();  // done: nothing left to choose
+    return 0;
 }
 
 }  // namespace
@@ -69,7 +89,7 @@ void Viewer::draw_panel() {
                 scenes_.pick(path);
         ImGui::EndCombo();
     }
-    ImGui::TextDisabled("or drop a .json or .obj on the window");
+    draw_open_field();
     if (shown.extension() == ".obj") {
         // A bare mesh from a Z-up tool (scans, CAD) is seen from the top: turn it.
         if (ImGui::BeginCombo("up axis", options_.up.c_str())) {
@@ -95,8 +115,6 @@ void Viewer::draw_panel() {
     ImGui::SameLine();
     ImGui::Checkbox("refraction", &settings_.refractions);
     ImGui::Checkbox("item buffer (primary hits from OpenGL)", &settings_.item_buffer);
-    // Every slider clamps what is typed into it (Ctrl+click) to its range, too.
-    constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
     ImGui::SliderInt("max depth", &settings_.max_depth, 0, 12, "%d", kClamp);
     ImGui::SliderFloat("resolution", &settings_.resolution_scale, 0.1f, 1.0f, "%.2f x window",
                        kClamp);
@@ -112,38 +130,18 @@ void Viewer::draw_panel() {
             set_view(kViews[i].value);
         if (i % 3 != 2 && i + 1 != kViewCount) ImGui::SameLine();
     }
+    ImGui::Checkbox("labels (L)", &display_.labels);
+    ImGui::SameLine();
+    ImGui::Checkbox("light markers", &display_.lights);
     if (display_.view == View::kSplit) {
         ImGui::Checkbox("swap sides (X)", &display_.swap);
         ImGui::SliderFloat("divider", &display_.divider, 0.0f, 1.0f, "%.3f", kClamp);
     }
-    if (display_.view == View::kDiff)
-        ImGui::SliderFloat("diff scale", &settings_.diff_scale, 0.01f, 1.0f, "%.3f", kClamp);
+    if (display_.view == View::kDiff) draw_diff_controls();
+    if (display_.view == View::kItemBuffer) draw_item_legend();
+    if (display_.view != View::kTrace && display_.view != View::kItemBuffer) draw_raster_legend();
 
-    section("statistics");
-    ImGui::Text("raster: %.1f ms", stats_.raster_ms);
-    if (tracer_.busy()) ImGui::ProgressBar(tracer_.progress(), ImVec2(-1, 0), "tracing");
-    ImGui::Text("traced image: 1/%d resolution", std::max(1, stats_.level));
-    if (stats_.full) {
-        const rt::RenderStats& s = stats_.full->stats;
-        ImGui::Text("trace: %.1f ms (primary %.1f, secondary %.1f)", 1e3 * s.seconds,
-                    1e3 * s.primary_seconds, 1e3 * s.secondary_seconds);
-        ImGui::Text("%.2f Mrays/s on %d threads", s.mrays_per_s(), s.threads);
-        if (const auto& plain = stats_.full->without_item_buffer) {
-            const double saved =
-                1e3 * (plain->primary_seconds - s.primary_seconds) - stats_.item_buffer_ms;
-            ImGui::Text("item buffer: pass %.1f ms, primary %.1f -> %.1f ms", stats_.item_buffer_ms,
-                        1e3 * plain->primary_seconds, 1e3 * s.primary_seconds);
-            ImGui::TextColored(
-                saved >= 0 ? ImVec4(0.5f, 1.0f, 0.5f, 1.0f) : ImVec4(1.0f, 0.6f, 0.4f, 1.0f),
-                "net %s %.1f ms", saved >= 0 ? "saving" : "loss", std::abs(saved));
-            const double pixels = static_cast<double>(stats_.full->stats.rays.primary);
-            ImGui::Text("%llu pixels disagree (%.4f%%), %llu fell back",
-                        static_cast<unsigned long long>(stats_.full->item_buffer_disagreements),
-                        100.0 * static_cast<double>(stats_.full->item_buffer_disagreements) /
-                            std::max(1.0, pixels),
-                        static_cast<unsigned long long>(s.item_buffer_fallbacks));
-        }
-    }
+    draw_statistics();
     ImGui::Separator();
     for (const Action a : {Action::kResetCamera, Action::kSave, Action::kHelp}) {
         if (a != Action::kResetCamera) ImGui::SameLine();
@@ -152,36 +150,42 @@ void Viewer::draw_panel() {
     ImGui::End();
 }
 
-void Viewer::draw_overlays(int width, int height) {
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const float scale =
-        static_cast<float>(ImGui::GetIO().DisplaySize.x) / static_cast<float>(std::max(1, width));
-    const float w = static_cast<float>(width) * scale, h = static_cast<float>(height) * scale;
-    if (quit_asked_ && quit_asked_->seconds() < kQuitSeconds)
-        label(ImGui::GetForegroundDrawList(), ImVec2(w * 0.5f - 150.0f, h * 0.5f),
-              "Press Esc again to quit (Ctrl+Q quits at once)");
-    const View view = shown_view();
-    if (view == View::kSplit) {
-        const float x = display_.divider * w;
-        label(draw, ImVec2(x - 110.0f, h - 30.0f), display_.swap ? "ray traced" : "OpenGL");
-        label(draw, ImVec2(x + 12.0f, h - 30.0f), display_.swap ? "OpenGL" : "ray traced");
-    } else if (view == View::kDiff) {
-        // The colour map and its scale, down the right-hand side.
-        const float x0 = w - 40.0f, y0 = 40.0f, y1 = h - 40.0f;
-        for (int i = 0; i < 64; ++i) {
-            const float a = y1 - (y1 - y0) * static_cast<float>(i) / 64.0f,
-                        b = y1 - (y1 - y0) * static_cast<float>(i + 1) / 64.0f;
-            draw->AddRectFilled(ImVec2(x0, b), ImVec2(x0 + 16.0f, a),
-                                heat_u32((static_cast<float>(i) + 0.5f) / 64.0f));
-        }
-        char top[32];
-        std::snprintf(top, sizeof top, "%.2f", settings_.diff_scale);
-        label(draw, ImVec2(x0 - 40.0f, y0 - 8.0f), top);
-        label(draw, ImVec2(x0 - 22.0f, y1 - 8.0f), "0");
-        label(draw, ImVec2(w * 0.5f - 120.0f, h - 30.0f), "|raster - traced|, sRGB");
-    } else {
-        const char* names[] = {"OpenGL", "ray traced", "", "", "item buffer (object ids)"};
-        label(draw, ImVec2(w * 0.5f - 40.0f, h - 30.0f), names[static_cast<int>(view)]);
+// A path typed (Tab completes, Enter opens), beside the picker and drops.
+void Viewer::draw_open_field() {
+    ImGui::SetNextItemWidth(230.0f);
+    const bool enter = ImGui::InputTextWithHint(
+        "##open", "path of a .json or .obj (Tab completes)", open_path_.data(), open_path_.size(),
+        ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CallbackCompletion,
+        complete_path, &open_candidates_);
+    ImGui::SameLine();
+    if ((ImGui::Button("open") || enter) && open_path_[0] != '\0') {
+        std::filesystem::path path(open_path_.data());
+        if (const char* home = std::getenv("HOME"); home && open_path_[0] == '~')
+            path = std::string(home) + std::string(open_path_.data() + 1);
+        scenes_.pick(std::filesystem::absolute(path));
+        open_candidates_.clear();
+    }
+    for (std::size_t i = 0; i < std::min<std::size_t>(open_candidates_.size(), 8); ++i)
+        ImGui::TextDisabled("  %s", open_candidates_[i].c_str());
+    if (open_candidates_.size() > 8)
+        ImGui::TextDisabled("  ... %zu more", open_candidates_.size() - 8);
+    ImGui::TextDisabled("or drop a .json or .obj on the window; F5 reads it again");
+}
+
+void Viewer::draw_diff_controls() {
+    const char* modes[] = {"heat: largest channel", "signed luminance", "per channel"};
+    int mode = static_cast<int>(display_.diff_mode);
+    if (ImGui::Combo("diff mode", &mode, modes, 3))
+        display_.diff_mode = static_cast<rt::gl::DiffMode>(mode);
+    ImGui::SliderFloat("diff scale", &settings_.diff_scale, 0.01f, 1.0f, "%.3f", kClamp);
+    bool mask = display_.diff_threshold > 0.0f;
+    if (ImGui::Checkbox("threshold mask", &mask))
+        display_.diff_threshold = mask ? 2.0f / 255.0f : 0.0f;
+    if (mask) {
+        ImGui::SliderFloat("threshold", &display_.diff_threshold, 1.0f / 255.0f, 0.5f, "%.4f",
+                           kClamp);
+        ImGui::TextDisabled("white: a channel differs by more (%.1f/255)",
+                            255.0f * display_.diff_threshold);
     }
 }
 

@@ -1,5 +1,6 @@
-// F12: the view on screen as a PNG, and for the split and difference views the raster,
-// traced and difference images behind it.
+// F12: the view on screen as a PNG, and from any view the raster, traced and difference
+// images behind it (the raster drawn at the traced image's size, so that the three match).
+// The window shows the absolute paths for a while; the log has one line per file.
 #include <cstdio>
 
 #include "app/gl/gl.h"
@@ -22,12 +23,21 @@ void write(const rt::Image& image, const std::string& path) {
     std::printf("saved: %s\n", path.c_str());
 }
 
+// "saved: /abs/rtview-3.view.png\n  .raster.png, ..." for the window.
+std::string message(const std::string& prefix, const std::vector<const char*>& kinds) {
+    std::string text = "saved: " + prefix + "." + kinds.front() + ".png\n  and";
+    for (std::size_t i = 1; i < kinds.size(); ++i)
+        text += std::string(i > 1 ? "," : "") + " ." + kinds[i] + ".png";
+    return text;
+}
+
 }  // namespace
 
 void Viewer::save_view(int width, int height) {
     try {
         std::filesystem::create_directories(options_.save_dir);
-        const std::string prefix = next_prefix(options_.save_dir).string();
+        const std::string prefix =
+            std::filesystem::absolute(next_prefix(options_.save_dir)).lexically_normal().string();
         // The window's pixels are sRGB already (the compositor encodes); decoding them
         // lets write_image encode them back to the same bytes.
         std::vector<std::uint8_t> bytes(static_cast<std::size_t>(width) * height * 3);
@@ -40,16 +50,17 @@ void Viewer::save_view(int width, int height) {
             for (int k = 0; k < 3; ++k)
                 view.pixels[i][k] = rt::srgb_decode(static_cast<float>(bytes[3 * i + k]) / 255.0f);
         write(view, prefix + ".view.png");
-        if (display_.view == View::kSplit || display_.view == View::kDiff) {
-            const rt::Camera camera =
-                controller_->camera(traced_image_.width, traced_image_.height);
-            const rt::Image raster = raster_->render(camera);
-            write(raster, prefix + ".raster.png");
-            write(traced_image_, prefix + ".trace.png");
-            write(rt::difference_image(raster, traced_image_, settings_.diff_scale),
-                  prefix + ".diff.png");
-        }
+        const rt::Camera camera = controller_->camera(traced_image_.width, traced_image_.height);
+        const rt::Image raster = raster_->render(camera);
+        raster_camera_.reset();  // the raster view's texture now holds this pass
+        write(raster, prefix + ".raster.png");
+        write(traced_image_, prefix + ".trace.png");
+        write(rt::difference_image(raster, traced_image_, settings_.diff_scale),
+              prefix + ".diff.png");
         std::fflush(stdout);
+        saved_ = message(prefix, {"view", "raster", "trace", "diff"});
+        if (traced_stale()) saved_ += "\n  (the traced image was still of the previous camera)";
+        saved_at_.emplace();
     } catch (const std::exception& e) {
         error_ = std::string("save: ") + e.what();
         std::fprintf(stderr, "%s\n", error_.c_str());

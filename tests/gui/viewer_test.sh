@@ -12,7 +12,7 @@ W=800 H=600
 "$rtrender" "$scene" --mode both --size ${W}x$H -q -o "$work/ref.png"
 "$rtrender" "$scene" --size ${W}x$H -q --no-shadows -o "$work/ref_noshadow.png"
 # Where the panel's check boxes are (its layout is fixed: ray-tracer settings first).
-SHADOWS="27 107" ITEM_BUFFER="27 130" MAX_DEPTH="120 153"
+SHADOWS="27 130" ITEM_BUFFER="27 153" MAX_DEPTH="120 176"
 
 # The scene picker's folder: the real scenes plus one that cannot load.
 mkdir -p "$work/assets/scenes"
@@ -26,8 +26,13 @@ start_app "$rtview" "$scene" --size ${W}x$H --view raster --save-dir "$work/save
 wait_for_window "^rtview - " || exit 1
 wait_for_log "^traced:" 1 || exit 1
 
-# Views, with the panel and labels hidden (H) so the whole window is the view.
+# H hides the panel; the labels stay (they name what is shown) until L hides them too.
 key h
+settle
+grab labelled
+check "with the panel hidden the view is still labelled" at_least 150 "$work/labelled.png" "$work/ref.raster.png"
+# Views, with the panel and labels hidden so the whole window is the view.
+key l
 settle
 grab raster
 check "raster view shows rtrender's raster image" at_most 100 "$work/raster.png" "$work/ref.raster.png"
@@ -73,7 +78,7 @@ grab ids
 check "item-buffer view shows the object ids" at_most 100 "$work/ids.png" "$work/ref.ids.png"
 after "^view: split" key 3 && settle
 
-# Save: the view and, for the split view, raster, traced and difference images.
+# Save: the view and the raster, traced and difference images behind it.
 after "^saved: .*diff.png" key F12
 check "saved four files" test -s "$work/saves/rtview-1.view.png" -a -s "$work/saves/rtview-1.raster.png" \
     -a -s "$work/saves/rtview-1.trace.png" -a -s "$work/saves/rtview-1.diff.png"
@@ -88,6 +93,18 @@ differ=$(compare -metric AE -fuzz 1% "$work/saves/rtview-1.raster.png" "$work/sa
 check "saved difference lights the $differ differing pixels ($lit lit)" \
     test "${differ%.*}" -gt 1000 -a "$lit" -gt "$((${differ%.*} / 2))" -a "$lit" -lt "$((${differ%.*} * 2))"
 
+# From any view: the raster view saves the traced and difference images too, and the
+# window shows where the files went (absolute paths) for a few seconds.
+after "^view: raster" key 1 && settle
+after "^saved: .*diff.png" key F12
+settle
+grab saved_message
+check "saving from the raster view writes all four" test -s "$work/saves/rtview-2.view.png" -a \
+    -s "$work/saves/rtview-2.trace.png" -a -s "$work/saves/rtview-2.diff.png"
+check "  ... the log names absolute paths" grep -q "^saved: $work/saves/rtview-2.trace.png" "$work/app.log"
+check "  ... and so does the window" at_least 500 "$work/saved_message.png" "$work/raster.png"
+sleep 6  # the message goes
+
 # Orbit, then reset: the view changes, and R brings back the first one.
 after "^view: raster" key 1 && settle
 after "^traced:" drag 1 300 300 420 260 && settle
@@ -101,16 +118,16 @@ grab reset
 check "R resets the camera" at_most 100 "$work/reset.png" "$work/raster.png"
 
 # A setting: untick "shadows" in the panel; the traced view loses its shadows.
-key h
+key h l
 settle
 after "^traced:" click $SHADOWS
-key h
+key h l
 after "^view: traced" key 2 && settle
 grab noshadow
 check "shadows off in the panel: the traced view has none" at_most 100 "$work/noshadow.png" "$work/ref_noshadow.png"
 
 # The item buffer: tick it; the tracer reports what it saved and how many pixels differ.
-key h
+key h l
 settle
 after "^item buffer:" click $ITEM_BUFFER
 line=$(grep "^item buffer:" "$work/app.log" | tail -n1)
@@ -123,7 +140,7 @@ for size in "1 1" "3840 2160" "1200 300" "200 900" "$W $H"; do xdotool windowsiz
 xdotool windowunmap "$wid"; sleep 0.5; xdotool windowmap "$wid"; sleep 0.3
 # Back at its size, the window shows the traced view again, whole: wait for it (up to
 # 15 s) rather than trusting a sleep, and compare with rtrender's image of it.
-key h  # hide the panel, as when the reference was grabbed
+key h l  # hide the panel and labels, as when the reference was grabbed
 redrawn=1
 for _ in $(seq 30); do
     sleep 0.5
@@ -132,7 +149,7 @@ for _ in $(seq 30); do
 done
 check "after the resizes the traced view is drawn again at ${W}x$H" test "$redrawn" -eq 0
 check "  ... at its size" test "$(identify -format %wx%h "$work/resized.png")" = "${W}x$H"
-key h
+key h l
 # The panel is back where it was (it used to be left off-screen after the 1 x 1 resize):
 # a click on its shadows box reaches it.
 settle
@@ -173,14 +190,16 @@ after "^trace settings:" key BackSpace BackSpace BackSpace 5 4 Return
 check "max depth typed as 54 becomes 12 ($(grep "^trace settings:" "$work/app.log" | tail -n1))" \
     grep -q "max depth 12," <(grep "^trace settings:" "$work/app.log" | tail -n1)
 
-# Nine quick clicks on the shadows box, faster than frames come: each one counts (two
-# within one frame used to count once), so shadows end the other way round. Wait until no
-# new settings line has come for two seconds (the clicks reach the panel one per frame).
+# Nine clicks on the shadows box within a few milliseconds, far faster than frames come:
+# each one counts (two within one frame used to count once). They reach the panel one a
+# frame, so each toggle starts a trace and logs its settings: nine new lines, the last
+# the other way round. Wait until no new line has come for two seconds.
 settle
 before=$(grep "^trace settings:" "$work/app.log" | tail -n1 | sed -n 's/.*shadows \(o[nf]*\),.*/\1/p')
 expected=on
 [ "$before" = on ] && expected=off
-xdotool mousemove --window "$wid" $SHADOWS click --repeat 9 --delay 15 1
+lines_before=$(log_count "^trace settings:")
+xdotool mousemove --window "$wid" $SHADOWS click --repeat 9 --delay 1 1
 lines=-1
 for _ in $(seq 40); do
     sleep 1
@@ -189,7 +208,9 @@ for _ in $(seq 40); do
     lines=$now
     sleep 1
 done
-check "nine quick clicks turn shadows $expected ($(grep "^trace settings:" "$work/app.log" | tail -n1))" \
+check "nine quick clicks are nine toggles ($((lines - lines_before)) settings lines)" \
+    test "$((lines - lines_before))" -eq 9
+check "  ... and shadows end $expected ($(grep "^trace settings:" "$work/app.log" | tail -n1))" \
     grep -q "shadows $expected," <(grep "^trace settings:" "$work/app.log" | tail -n1)
 after "^trace settings:" click $SHADOWS
 
