@@ -12,6 +12,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "app/viewer/camera_controller.h"
+#include "app/viewer/frame_history.h"
 #include "app/viewer/keys.h"
 #include "app/viewer/refinement.h"
 #include "app/viewer/scene_switcher.h"
@@ -343,6 +344,19 @@ TEST(Controls, KeysFindTheirActionWithExactlyTheirModifiers) {
         if (c.action == Action::kNone) continue;
         EXPECT_EQ(action_of(c.chords[0].key, c.chords[0].mods), c.action) << c.name;
     }
+}
+
+TEST(FrameHistory, KeepsTheNewestOldestFirst) {
+    FrameHistory h;
+    EXPECT_EQ(h.median(), 0.0f);
+    for (int i = 1; i <= 5; ++i) h.add(static_cast<float>(i));
+    EXPECT_EQ(h.values(), (std::vector<float>{1, 2, 3, 4, 5}));
+    EXPECT_EQ(h.median(), 3.0f);
+    EXPECT_EQ(h.max(), 5.0f);
+    for (std::size_t i = 0; i < FrameHistory::kSize; ++i) h.add(100.0f + static_cast<float>(i));
+    ASSERT_EQ(h.size(), FrameHistory::kSize);
+    EXPECT_EQ(h.values().front(), 100.0f);  // the first five are gone
+    EXPECT_EQ(h.values().back(), 100.0f + static_cast<float>(FrameHistory::kSize - 1));
 }
 
 }  // namespace
