@@ -37,6 +37,7 @@ class Window {
     void forward_mouse_button(int button, int action, int mods);
     void forward_char(unsigned int c);  // queued with the keys, so typing keeps its order
     static void forward_scroll(GLFWwindow* window, double dx, double dy);
+    bool input_pending() const { return !queued_.empty(); }  // for ImGui's next frames
     void begin_imgui_frame();
     void end_imgui_frame();  // renders ImGui's draw data
     void swap_buffers();

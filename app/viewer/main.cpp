@@ -1,6 +1,6 @@
 // rtview: the interactive viewer.
 //   rtview [SCENE] [--size WxH] [--view raster|trace|split|diff|itembuffer] [--save-dir DIR]
-//          [--accel bvh|bvh2|grid|brute]
+//          [--accel bvh|bvh2|grid|brute] [--benchmark]
 
 #include <charconv>
 #include <iostream>
@@ -32,6 +32,11 @@ int main(int argc, char** argv) {
     app.add_option("--accel", options.accel,
                    "Acceleration structure: bvh (wide, default), bvh2 (binary), grid or brute")
         ->transform(rt::app::cli_names(rt::kAccelNames));
+    bool benchmark = false;
+    app.add_flag("--benchmark", benchmark,
+                 "Measure frame times while tracing, at rest and orbiting, and the delay to "
+                 "the full trace, on the scene given or else every scene of the scenes "
+                 "folder; print a table and exit");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -50,7 +55,16 @@ int main(int argc, char** argv) {
     options.save_dir = save_dir;
     try {
         rt::viewer::Viewer viewer(options);
-        return viewer.run();
+        if (!benchmark) return viewer.run();
+        std::vector<std::string> scenes;
+        if (app.count("scene") > 0) {
+            scenes.push_back(options.scene);
+        } else {
+            for (const auto& p :
+                 rt::viewer::SceneSwitcher(rt::viewer::scenes_dir(RTVIEW_ASSET_DIR)).scenes())
+                scenes.push_back(p.string());
+        }
+        return viewer.benchmark(scenes);
     } catch (const rt::Error& e) {
         std::cerr << e.what() << '\n';
         return 1;

@@ -4,7 +4,8 @@
 
 namespace rt::viewer {
 
-TraceJob::TraceJob() : thread_([this](std::stop_token stop) { loop(stop); }) {}
+TraceJob::TraceJob(std::function<void()> on_publish)
+    : on_publish_(std::move(on_publish)), thread_([this](std::stop_token stop) { loop(stop); }) {}
 
 TraceJob::~TraceJob() {
     thread_.request_stop();
@@ -90,11 +91,14 @@ void TraceJob::run(const TraceRequest& request, std::stop_token cancel) {
             result.without_item_buffer = plain_stats;
             result.item_buffer_disagreements = rt::item_buffer_disagreements(result.image, plain);
         }
-        std::lock_guard lock(mutex_);
-        // A request submitted while this level rendered supersedes it (submit stops the
-        // token under this lock, so the check cannot race).
-        if (cancel.stop_requested()) return;
-        result_ = std::move(result);
+        {
+            std::lock_guard lock(mutex_);
+            // A request submitted while this level rendered supersedes it (submit stops the
+            // token under this lock, so the check cannot race).
+            if (cancel.stop_requested()) return;
+            result_ = std::move(result);
+        }
+        if (on_publish_) on_publish_();
     }
 }
 

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -41,7 +42,9 @@ struct TraceResult {
 
 class TraceJob {
   public:
-    TraceJob();
+    // `on_publish` is called on the worker thread after each level is published (the
+    // viewer wakes its event loop with it); it must be thread-safe.
+    explicit TraceJob(std::function<void()> on_publish = {});
     ~TraceJob();
 
     void submit(TraceRequest request);
@@ -65,6 +68,7 @@ class TraceJob {
     std::optional<TraceResult> result_;
     std::atomic<float> progress_{0.0f};
     std::atomic<bool> busy_{false};
+    std::function<void()> on_publish_;
     std::jthread thread_;  // last: starts after the members it uses
 };
 

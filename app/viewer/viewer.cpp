@@ -58,6 +58,7 @@ Viewer::Viewer(const ViewerOptions& options)
                               options.up)),  // a bad file fails before any window opens
       window_(options.width, options.height, "rtview"),
       scenes_(scenes_dir(RTVIEW_ASSET_DIR)),
+      tracer_([] { glfwPostEmptyEvent(); }),
       display_{.view = options.view} {
     GLFWwindow* w = window_.handle();
     glfwSetWindowUserPointer(w, this);
@@ -280,12 +281,12 @@ void Viewer::frame(float dt) {
     const rt::Stopwatch watch;
     const glm::ivec2 fb = window_.framebuffer_size();
     if (const std::optional<std::string> next = scenes_.take()) load(*next);
-    if (!ImGui::GetIO().WantCaptureKeyboard) {
+    const rt::vec3 fly = fly_direction();
+    if (fly != rt::vec3(0.0f)) {
         GLFWwindow* w = window_.handle();
-        const auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0f : 0.0f; };
-        const rt::vec3 fly{down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
-                           down(GLFW_KEY_W) - down(GLFW_KEY_S)};
-        controller_->fly(fly, dt, down(GLFW_KEY_LEFT_SHIFT) + down(GLFW_KEY_RIGHT_SHIFT) > 0.0f);
+        const bool fast = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                          glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+        controller_->fly(fly, dt, fast);
     }
     update_trace();
     collect_trace();
@@ -304,6 +305,27 @@ void Viewer::frame(float dt) {
     stats_.frame_ms.add(static_cast<float>(watch.milliseconds()));
 }
 
+// W A S D Q E held (while no text field has the keys): where the camera flies.
+rt::vec3 Viewer::fly_direction() const {
+    if (ImGui::GetIO().WantCaptureKeyboard) return rt::vec3(0.0f);
+    GLFWwindow* w = window_.handle();
+    const auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0f : 0.0f; };
+    return {down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
+            down(GLFW_KEY_W) - down(GLFW_KEY_S)};
+}
+
+// The loop waits for events while nothing on screen moves by itself, so that the tracer
+// has the cores: a traced level (the trace job wakes the loop), a key, a click or a drag
+// ends the wait at once, and a frame comes at least every kIdleWait for what changes
+// with time (the progress bar, the flicker, messages, the schedule's rest). It polls
+// while the camera flies or ImGui still has input queued.
+void Viewer::wait_for_events() {
+    if (fly_direction() != rt::vec3(0.0f) || window_.input_pending())
+        glfwPollEvents();
+    else
+        glfwWaitEventsTimeout(kIdleWait);
+}
+
 int Viewer::run() {
     update_title();
     auto last = Clock::now();
@@ -314,7 +336,7 @@ int Viewer::run() {
             last = Clock::now();
             continue;
         }
-        glfwPollEvents();
+        wait_for_events();
         const auto now = Clock::now();
         frame(std::min(0.1f, std::chrono::duration<float>(now - last).count()));
         last = now;

@@ -90,6 +90,9 @@ class Viewer {
     explicit Viewer(const ViewerOptions& options);  // throws rt::Error
     ~Viewer();
     int run();
+    // Measures the viewer on each scene in turn (app/viewer/viewer_bench.cpp); 1 if one
+    // failed to load or to finish tracing.
+    int benchmark(const std::vector<std::string>& scenes);
 
     // GLFW input, forwarded by the static callbacks.
     void on_key(int key, int scancode, int action, int mods);
@@ -101,6 +104,7 @@ class Viewer {
   private:
     static constexpr double kQuitSeconds = 2.0;     // the second Esc within this quits
     static constexpr double kMessageSeconds = 6.0;  // how long "saved: ..." stays
+    static constexpr double kIdleWait = 0.1;        // the longest wait for events
     void on_escape();
     void quit(const char* how);
     bool load(const std::string& path);  // on failure: false, error_ set, current scene kept
@@ -108,6 +112,10 @@ class Viewer {
                  const std::string& path);  // GL upload, camera, restart
     void perform(Action action);
     void frame(float dt);
+    void wait_for_events();
+    rt::vec3 fly_direction() const;
+    double timed_frame(bool wait);  // events (waited for, or polled) and a frame: its ms
+    bool frames_until_traced(std::vector<double>& frames);
     void update_trace();
     TraceKey trace_key() const;
     void log_trace_settings(const TraceKey& key);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -145,7 +146,8 @@ std::optional<TraceResult> wait_for_level(TraceJob& job, int level) {
 }
 
 TEST(TraceJob, RefinesToFullResolution) {
-    TraceJob job;
+    std::atomic<int> published{0};  // the viewer wakes its event loop on each
+    TraceJob job([&] { ++published; });
     TraceRequest request;
     request.scene = tutorial();
     request.camera = request.scene->camera.resized(160, 120);
@@ -158,6 +160,8 @@ TEST(TraceJob, RefinesToFullResolution) {
     EXPECT_EQ(full->image.width, 160);
     EXPECT_EQ(full->image.height, 120);
     EXPECT_EQ(full->stats.rays.primary, 160u * 120u);
+    job.cancel();  // the worker is done: every level has said so
+    EXPECT_EQ(published.load(), 3);
 }
 
 // Every level arrives, coarse to fine: taken as soon as published, the levels of one
