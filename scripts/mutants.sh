@@ -116,6 +116,9 @@ mutant keys-reach-imgui-focus app/viewer/viewer.cpp \
 mutant input-events-collapse-within-a-frame app/gl/window.cpp \
     'if (std::any_of(changed_.begin(), changed_.end(), same)) break;' '(void)same;' \
     rtview ctest -R '^gui[.]' --output-on-failure
+mutant shown-trace-takes-late-results app/viewer/refinement.h \
+    'if (submitted_ && submitted_->first == id) {' 'if (submitted_) {' \
+    rt_viewer_tests tests/rt_viewer_tests --gtest_filter='ShownTrace.*'
 mutant typed-slider-values-unclamped app/viewer/viewer_panel.cpp \
     'constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;' \
     'constexpr ImGuiSliderFlags kClamp = 0;' rtview ctest -R '^gui[.]' --output-on-failure

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace rt::viewer {
@@ -39,6 +40,32 @@ class RefinementSchedule {
     std::optional<TraceKey> submitted_;
     bool refine_pending_ = false;
     double last_change_ = 0.0;
+};
+
+// Which trace the image on screen belongs to: the viewer says what it submitted and what
+// arrived, and asks whether the image is stale (of a camera or settings other than the
+// current ones), so that the view says "tracing..." rather than pass an old image off as
+// the current one.
+class ShownTrace {
+  public:
+    void submitted(std::uint64_t id, const TraceKey& key) { submitted_ = {id, key}; }
+    // A level of request `id` went on screen (results of older requests never do).
+    void arrived(std::uint64_t id, int level) {
+        if (submitted_ && submitted_->first == id) {
+            shown_ = submitted_->second;
+            level_ = level;
+        }
+    }
+    bool stale(const TraceKey& now) const { return !shown_ || !(*shown_ == now); }
+    int level() const { return level_; }  // 0: nothing traced on screen yet
+    // Full resolution, of the current camera and settings.
+    bool complete(const TraceKey& now) const { return level_ == 1 && !stale(now); }
+    void reset() { *this = ShownTrace{}; }
+
+  private:
+    std::optional<std::pair<std::uint64_t, TraceKey>> submitted_;
+    std::optional<TraceKey> shown_;
+    int level_ = 0;
 };
 
 }  // namespace rt::viewer

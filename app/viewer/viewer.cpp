@@ -117,8 +117,7 @@ void Viewer::install(std::shared_ptr<const rt::Scene> scene, const std::string& 
     stats_ = FrameStats{};
     raster_camera_.reset();
     ids_camera_.reset();
-    submitted_key_.reset();
-    shown_key_.reset();
+    shown_.reset();
     error_.clear();
     std::printf("scene: %s (%zu objects, %zu triangles)\n", path.c_str(), scene_->objects.size(),
                 scene_->triangle_count());
@@ -189,7 +188,7 @@ void Viewer::update_trace() {
         ids_camera_.reset();  // the pass drew over the item-buffer view's texture
     }
     request.id = ++request_id_;
-    submitted_key_ = key;
+    shown_.submitted(request_id_, key);
     tracer_.submit(std::move(request));
 }
 
@@ -198,10 +197,9 @@ void Viewer::collect_trace() {
     if (!result || result->id != request_id_) return;
     traced_image_ = std::move(result->image);
     traced_texture_.upload(traced_image_);
-    stats_.level = result->level;
+    shown_.arrived(result->id, result->level);
     stats_.shown = result->stats;
     stats_.trace_ms.add(static_cast<float>(1e3 * result->stats.seconds));
-    shown_key_ = submitted_key_;
     if (result->level == 1) {
         std::printf("traced: %dx%d in %.3f s (primary %.3f s, secondary %.3f s), %.2f Mrays/s\n",
                     traced_image_.width, traced_image_.height, result->stats.seconds,
@@ -227,7 +225,7 @@ View Viewer::shown_view() const {
     return phase % 2 == 0 ? View::kRaster : View::kTrace;
 }
 
-bool Viewer::traced_stale() const { return !shown_key_ || !(*shown_key_ == trace_key()); }
+bool Viewer::traced_stale() const { return shown_.stale(trace_key()); }
 
 GLuint Viewer::raster_texture(const rt::Camera& camera) {
     if (raster_camera_ != camera) {
@@ -290,6 +288,7 @@ void Viewer::frame(float dt) {
     }
     update_trace();
     collect_trace();
+    update_title();  // "tracing" from the frame the camera moves, not from the next level
     draw_views(fb.x, fb.y);
     if (save_requested_) {
         save_requested_ = false;
@@ -354,7 +353,7 @@ void Viewer::set_view(View view) {
 void Viewer::update_title() {
     std::string title = "rtview - " + std::filesystem::path(scenes_.current()).filename().string() +
                         " - " + view_label(display_.view);
-    title += stats_.level == 1 && !traced_stale() ? " - traced" : " - tracing";
+    title += shown_.complete(trace_key()) ? " - traced" : " - tracing";
     if (title != title_) window_.set_title(title);
     title_ = title;
 }

@@ -57,7 +57,6 @@ struct Settings {
 struct FrameStats {
     double raster_ms = 0.0;  // the last raster pass (drawn again only when its camera changes)
     int raster_width = 0, raster_height = 0;
-    int level = 0;                    // of the traced image on screen (0: none yet)
     rt::RenderStats shown;            // the traced image on screen: its level's trace
     std::optional<TraceResult> full;  // the last full-resolution trace (image moved out)
     double item_buffer_ms = 0.0;      // raster item-buffer pass with read-back
@@ -159,8 +158,7 @@ class Viewer {
     std::optional<TraceKey> logged_settings_;
     rt::Stopwatch clock_;  // the viewer's time, for the schedule
     std::uint64_t request_id_ = 0;
-    std::optional<TraceKey> submitted_key_;  // of request_id_
-    std::optional<TraceKey> shown_key_;      // of the traced image on screen
+    ShownTrace shown_;  // what the traced image on screen belongs to
     FrameStats stats_;
     std::optional<rt::Camera> raster_camera_, ids_camera_;  // what the textures hold
     GLuint raster_texture_ = 0, ids_texture_ = 0;

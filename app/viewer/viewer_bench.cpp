@@ -45,7 +45,7 @@ bool Viewer::frames_until_traced(std::vector<double>& frames) {
     do {
         frames.push_back(timed_frame(true));
         if (watch.seconds() > kTimeout) return false;
-    } while (stats_.level != 1 || traced_stale());
+    } while (!shown_.complete(trace_key()));
     return true;
 }
 

@@ -46,7 +46,7 @@ void diff_scale_bar(ImDrawList* draw, float w, float h, rt::gl::DiffMode mode, f
 
 std::string Viewer::traced_label() const {
     std::string text = "ray traced";
-    if (stats_.level > 1) text += ", 1/" + std::to_string(stats_.level) + " resolution";
+    if (shown_.level() > 1) text += ", 1/" + std::to_string(shown_.level()) + " resolution";
     if (traced_stale()) text += " - tracing... (this image is from before the last change)";
     return text;
 }
@@ -64,7 +64,7 @@ std::string Viewer::diff_label(int width) const {
     }
     text += ", sRGB";
     if (traced_image_.width < width)
-        text += "; at the traced image's 1/" + std::to_string(std::max(1, stats_.level)) +
+        text += "; at the traced image's 1/" + std::to_string(std::max(1, shown_.level())) +
                 " resolution (the raster drawn at that size)";
     if (traced_stale()) text += " - tracing...";
     return text;

@@ -33,7 +33,7 @@ void Viewer::draw_statistics() {
         ImGui::TextDisabled("raster pass: not drawn in this view yet");
     ImGui::TextDisabled("(drawn again only when the camera or the size changes)");
     if (tracer_.busy()) ImGui::ProgressBar(tracer_.progress(), ImVec2(-1, 0), "tracing");
-    if (stats_.level == 0) {
+    if (shown_.level() == 0) {
         ImGui::TextDisabled("traced image: none yet");
         return;
     }
@@ -41,10 +41,10 @@ void Viewer::draw_statistics() {
     if (stale)
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f),
                            "traced image: of the camera or settings before the last change");
-    ImGui::Text("traced image: 1/%d resolution, %dx%d, %.1f ms", stats_.level, traced_image_.width,
-                traced_image_.height, 1e3 * stats_.shown.seconds);
+    ImGui::Text("traced image: 1/%d resolution, %dx%d, %.1f ms", shown_.level(),
+                traced_image_.width, traced_image_.height, 1e3 * stats_.shown.seconds);
     if (stats_.trace_ms.size() > 1) plot("##traces", stats_.trace_ms, "traced levels");
-    if (stats_.level != 1 || stale || !stats_.full) {
+    if (shown_.level() != 1 || stale || !stats_.full) {
         ImGui::TextDisabled("full-resolution figures once the trace reaches 1/1");
         return;
     }

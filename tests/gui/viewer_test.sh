@@ -110,6 +110,17 @@ after "^view: raster" key 1 && settle
 after "^traced:" drag 1 300 300 420 260 && settle
 grab orbited
 check "orbiting changes the view" at_least 5000 "$work/orbited.png" "$work/raster.png"
+# The title says whether the traced image is the current camera's: "tracing" from the
+# moment the camera moves, "traced" once the full-resolution image of it is in.
+check "at rest after the orbit the title says traced ($(xdotool getwindowname "$wid"))" \
+    grep -q -- "- traced$" <(xdotool getwindowname "$wid")
+traced_before=$(log_count "^traced:")
+drag 1 300 300 330 300
+title=$(xdotool getwindowname "$wid")
+check "right after another orbit it says tracing ($title)" grep -q -- "- tracing$" <<<"$title"
+wait_for_log "^traced:" $((traced_before + 1))
+settle
+check "  ... and traced once the full trace is in" grep -q -- "- traced$" <(xdotool getwindowname "$wid")
 after "^traced:" drag 3 300 300 340 330 && settle
 grab panned
 check "panning (right drag) changes the view" at_least 5000 "$work/panned.png" "$work/orbited.png"

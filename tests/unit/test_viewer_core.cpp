@@ -363,5 +363,33 @@ TEST(FrameHistory, KeepsTheNewestOldestFirst) {
     EXPECT_EQ(h.values().back(), 100.0f + static_cast<float>(FrameHistory::kSize - 1));
 }
 
+// The image on screen is stale from the moment the camera moves until a level of the
+// new request arrives; a late level of an older request never makes it current.
+TEST(ShownTrace, StaleFromTheChangeUntilTheNewRequestArrives) {
+    ShownTrace shown;
+    TraceKey a;
+    a.width = 640;
+    EXPECT_TRUE(shown.stale(a));  // nothing traced yet
+    shown.submitted(1, a);
+    shown.arrived(1, 8);
+    EXPECT_FALSE(shown.stale(a));
+    EXPECT_FALSE(shown.complete(a));  // coarse
+    shown.arrived(1, 1);
+    EXPECT_TRUE(shown.complete(a));
+    TraceKey b = a;
+    b.camera_version = 1;  // the camera moved: the image on screen is a's
+    EXPECT_TRUE(shown.stale(b));
+    shown.submitted(2, b);
+    EXPECT_TRUE(shown.stale(b));
+    EXPECT_EQ(shown.level(), 1);  // a's full image, still shown
+    shown.arrived(1, 1);          // a late result of the old request
+    EXPECT_TRUE(shown.stale(b));
+    shown.arrived(2, 8);
+    EXPECT_FALSE(shown.stale(b));
+    EXPECT_EQ(shown.level(), 8);
+    shown.reset();
+    EXPECT_TRUE(shown.stale(b));
+}
+
 }  // namespace
 }  // namespace rt::viewer
