@@ -119,6 +119,9 @@ mutant input-events-collapse-within-a-frame app/gl/window.cpp \
 mutant shown-trace-takes-late-results app/viewer/refinement.h \
     'if (submitted_ && submitted_->first == id) {' 'if (submitted_) {' \
     rt_viewer_tests tests/rt_viewer_tests --gtest_filter='ShownTrace.*'
+mutant diff-against-the-full-raster app/viewer/viewer.cpp \
+    'in.view == View::kDiff && coarse' 'false && coarse' \
+    rtview ctest -R '^gui[.]' --output-on-failure
 mutant typed-slider-values-unclamped app/viewer/viewer_panel.cpp \
     'constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;' \
     'constexpr ImGuiSliderFlags kClamp = 0;' rtview ctest -R '^gui[.]' --output-on-failure

@@ -13,7 +13,7 @@ cleanup() {
     [ -n "$app_pid" ] && kill "$app_pid" 2>/dev/null
     [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null
     wait 2>/dev/null
-    if [ "$failures" -eq 0 ]; then rm -rf "$work"; else echo "grabs and logs kept in $work"; fi
+    if [ "$failures" -eq 0 ] && [ -z "${RTVIEW_KEEP_GRABS:-}" ]; then rm -rf "$work"; else echo "grabs and logs kept in $work"; fi
 }
 trap cleanup EXIT
 

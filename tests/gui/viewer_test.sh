@@ -12,7 +12,7 @@ W=800 H=600
 "$rtrender" "$scene" --mode both --size ${W}x$H -q -o "$work/ref.png"
 "$rtrender" "$scene" --size ${W}x$H -q --no-shadows -o "$work/ref_noshadow.png"
 # Where the panel's check boxes are (its layout is fixed: ray-tracer settings first).
-SHADOWS="27 130" ITEM_BUFFER="27 153" MAX_DEPTH="120 176"
+SHADOWS="27 130" ITEM_BUFFER="27 153" MAX_DEPTH="120 176" RESOLUTION="120 199"
 
 # The scene picker's folder: the real scenes plus one that cannot load.
 mkdir -p "$work/assets/scenes"
@@ -224,6 +224,31 @@ check "nine quick clicks are nine toggles ($((lines - lines_before)) settings li
 check "  ... and shadows end $expected ($(grep "^trace settings:" "$work/app.log" | tail -n1))" \
     grep -q "shadows $expected," <(grep "^trace settings:" "$work/app.log" | tail -n1)
 after "^trace settings:" click $SHADOWS
+
+# The difference at a quarter of the window's resolution compares like with like: the
+# raster is drawn at the traced image's size, so with shadows off (the Cornell box then
+# has no effect the raster lacks) next to nothing lights up, at full resolution or at a
+# quarter (not every edge of a blocky trace against a sharp raster).
+lit() { convert "$1" -crop "$((W - 50))x$H+0+0" -colorspace gray -threshold 2% -format "%[fx:round(mean*w*h)]" info:; }
+if grep -q "shadows on" <(grep "^trace settings:" "$work/app.log" | tail -n1); then
+    after "^trace settings:" click $SHADOWS
+fi
+after "^view: difference" key 4
+key h l && settle
+grab diff_full
+key h l && settle
+xdotool mousemove --window "$wid" $RESOLUTION keydown ctrl click 1 keyup ctrl
+sleep 0.3
+after "^traced: $((W / 4))x$((H / 4))" key BackSpace BackSpace BackSpace BackSpace BackSpace BackSpace 0 period 2 5 Return
+key h l && settle
+grab diff_quarter
+key h l && settle
+full=$(lit "$work/diff_full.png") quarter=$(lit "$work/diff_quarter.png")
+check "difference of $(basename "$(grep "^scene:" "$work/app.log" | tail -n1 | cut -d' ' -f2)") at 1/4 resolution lights next to nothing ($quarter pixels; $full at full)" \
+    test "$full" -lt 300 -a "$quarter" -lt 600
+xdotool mousemove --window "$wid" $RESOLUTION keydown ctrl click 1 keyup ctrl
+sleep 0.3
+after "^traced: ${W}x$H" key BackSpace BackSpace BackSpace BackSpace BackSpace BackSpace 1 Return
 
 # One Esc asks; a second within two seconds quits.
 after "^Esc: press Esc again" key Escape
