@@ -13,6 +13,7 @@ W=800 H=600
 "$rtrender" "$scene" --size ${W}x$H -q --no-shadows -o "$work/ref_noshadow.png"
 # Where the panel's check boxes are (its layout is fixed: ray-tracer settings first).
 SHADOWS="27 130" ITEM_BUFFER="27 153" MAX_DEPTH="120 176" RESOLUTION="120 199"
+OPEN_FIELD="100 69"
 
 # The scene picker's folder: the real scenes plus one that cannot load.
 mkdir -p "$work/assets/scenes"
@@ -183,6 +184,14 @@ scenes=$(log_count "^scene:")
 after "^scene:" key F5
 check "F5 reads the scene shown again ($shown)" test "$(log_count "^scene:")" -gt "$scenes" -a \
     "$(grep "^scene:" "$work/app.log" | tail -n1 | cut -d' ' -f2)" = "$shown"
+# The panel's path field opens any file: a click in it, the start of a path, Tab to
+# complete it, Enter to open.
+xdotool mousemove --window "$wid" $OPEN_FIELD click 1
+sleep 0.3
+xdotool type --delay 20 "$work/assets/scenes/tutor"
+after "^scene: .*tutorial.json" xdotool key --delay 100 Tab Return
+check "a path typed in the panel (Tab completed) opens the scene" \
+    grep -q "^scene: $work/assets/scenes/tutorial.json" <(grep "^scene:" "$work/app.log" | tail -n1)
 
 # With the panel focused by a click, Tab then a digit: the digit switches the view; it is
 # never typed into a slider that Tab focused (it used to go into the threads slider).
