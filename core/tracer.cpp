@@ -27,23 +27,45 @@ vec3 Tracer::shade_hit(const Ray& r, const Hit& hit, RayCounts& counts) const {
 }
 
 vec3 Tracer::trace(const Ray& r, const Path& path, RayCounts& counts) const {
+    if (recorder_) return trace_recorded(r, path, counts);
     Hit hit;
     if (!scene_.intersect(r, hit)) return scene_.background;
     return shade(r, hit, path, counts);
 }
 
+// The same, written into the ray tree: the ray, then (in shade) its hit, its shadow
+// feelers and its reflected and refracted rays, then the colour it brought back.
+vec3 Tracer::trace_recorded(const Ray& r, const Path& path, RayCounts& counts) const {
+    RayNode& node = recorder_->begin(path.kind, r, path.weight);
+    node.total_internal_reflection = path.total_internal_reflection;
+    Hit hit;
+    const vec3 colour = scene_.intersect(r, hit) ? shade(r, hit, path, counts) : scene_.background;
+    recorder_->end(colour);
+    return colour;
+}
+
+RayHitRecord Tracer::hit_record(const Ray& r, const Hit& hit) const {
+    const SurfacePoint sp = scene_.surface(r, hit);
+    return {hit.object, scene_.objects[hit.object].name, hit.t, hit.t * glm::length(r.dir), sp.p,
+            sp.normal};
+}
+
 vec3 Tracer::shade(const Ray& r, const Hit& hit, const Path& path, RayCounts& counts) const {
     const SurfacePoint sp = scene_.surface(r, hit);
     const Material& m = scene_.materials[sp.material];
+    if (recorder_) recorder_->open().hit = hit_record(r, hit);
     vec3 colour = phong(r, sp, counts);
+    if (recorder_) recorder_->open().local = colour;
     if (path.depth >= options_.max_depth) return colour;
     // R_n = R_amb + R_diff + R_spec + reflectivity R_(n-1), and the same for transmission.
     if (options_.reflections && m.reflectivity * path.weight >= options_.min_weight) {
-        const Path next{path.depth + 1, path.weight * m.reflectivity, path.media};
+        const Path next{path.depth + 1, path.weight * m.reflectivity, path.media,
+                        RayKind::kReflection};
         colour += m.reflectivity * reflected(r, sp, next, counts);
     }
     if (options_.refractions && m.transparency * path.weight >= options_.min_weight) {
-        const Path next{path.depth + 1, path.weight * m.transparency, path.media};
+        const Path next{path.depth + 1, path.weight * m.transparency, path.media,
+                        RayKind::kRefraction};
         colour += m.transparency * refracted(r, hit, sp, next, counts);
     }
     return colour;
@@ -88,7 +110,18 @@ bool Tracer::visible(const vec3& p, const SurfacePoint& sp, const Light& light,
         return glm::dot(from_surface, sp.geometric_normal) > 0.0f;
     }
     ++counts.shadow;
-    return !scene_.occluded(Ray{p, dir}, t_max);
+    const bool blocked = scene_.occluded(Ray{p, dir}, t_max);
+    if (recorder_) record_feeler(Ray{p, dir}, t_max, light, blocked);
+    return !blocked;
+}
+
+void Tracer::record_feeler(const Ray& feeler, float t_max, const Light& light, bool blocked) const {
+    RayNode& node = recorder_->leaf(RayKind::kShadow, feeler, recorder_->open().weight);
+    node.light = static_cast<int>(&light - scene_.lights.data());
+    node.blocked = blocked;
+    Hit first;
+    first.t = t_max;
+    if (blocked && scene_.intersect(feeler, first)) node.blocker = hit_record(feeler, first);
 }
 
 // `path` is the new ray's: one deeper, its weight, and (a reflection stays on its side
@@ -110,10 +143,13 @@ vec3 Tracer::refracted(const Ray& r, const Hit& hit, const SurfacePoint& sp, con
         refract_dir(glm::normalize(r.dir), sp.normal, crossing.eta_from, crossing.eta_to);
     if (t.total_internal_reflection) {
         // No light crosses: what would have been transmitted is reflected instead.
-        return reflected(r, sp, path, counts);
+        Path mirrored = path;
+        mirrored.kind = RayKind::kReflection;
+        mirrored.total_internal_reflection = true;
+        return reflected(r, sp, mirrored, counts);
     }
     ++counts.refracted;
-    const Path through{path.depth, path.weight, crossing.after};
+    const Path through{path.depth, path.weight, crossing.after, RayKind::kRefraction};
     return trace(Ray{offset_ray_origin(sp.p, -sp.geometric_normal), t.dir}, through, counts);
 }
 

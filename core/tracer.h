@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "core/medium.h"
+#include "core/ray_tree.h"
 #include "core/scene.h"
 
 namespace rt {
@@ -46,7 +47,10 @@ Refraction refract_dir(const vec3& d, const vec3& n, float eta_from, float eta_t
 
 class Tracer {
   public:
-    Tracer(const Scene& scene, const TraceOptions& options) : scene_(scene), options_(options) {}
+    // With a recorder, every ray traced is also written into its tree (one pixel at a
+    // time: trace_primary once per recorder).
+    Tracer(const Scene& scene, const TraceOptions& options, RayTreeRecorder* recorder = nullptr)
+        : scene_(scene), options_(options), recorder_(recorder) {}
 
     // The colour seen along a camera ray (linear RGB).
     vec3 trace_primary(const Ray& r, RayCounts& counts) const;
@@ -64,17 +68,23 @@ class Tracer {
         int depth = 0;
         float weight = 1.0f;
         MediumStack media;
+        RayKind kind = RayKind::kPrimary;        // for the recorder
+        bool total_internal_reflection = false;  // likewise
     };
     vec3 trace(const Ray& r, const Path& path, RayCounts& counts) const;
+    vec3 trace_recorded(const Ray& r, const Path& path, RayCounts& counts) const;
     vec3 shade(const Ray& r, const Hit& hit, const Path& path, RayCounts& counts) const;
     vec3 reflected(const Ray& r, const SurfacePoint& sp, const Path& path, RayCounts& counts) const;
     vec3 refracted(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,
                    RayCounts& counts) const;
     bool visible(const vec3& p, const SurfacePoint& sp, const Light& light,
                  RayCounts& counts) const;
+    RayHitRecord hit_record(const Ray& r, const Hit& hit) const;
+    void record_feeler(const Ray& feeler, float t_max, const Light& light, bool blocked) const;
 
     const Scene& scene_;
     TraceOptions options_;
+    RayTreeRecorder* recorder_ = nullptr;
 };
 
 }  // namespace rt

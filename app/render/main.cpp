@@ -48,6 +48,10 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     app.add_flag("--no-refractions", no_refractions, "Trace no refracted rays");
     app.add_option("--stats", o.stats, "Write render statistics as JSON");
     app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
+    app.add_option("--ray-tree", o.ray_tree,
+                   "Print the rays pixel X,Y (from the top left, at --size) spawns, instead "
+                   "of rendering");
+    app.add_option("--ray-tree-json", o.ray_tree_json, "With --ray-tree: write them as JSON");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

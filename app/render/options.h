@@ -29,6 +29,8 @@ struct Options {
     int threads = 0;
     rt::TraceOptions trace;
     bool quiet = false;
+    std::string ray_tree;       // "X,Y": print that pixel's rays instead of rendering
+    std::string ray_tree_json;  // and write them here
 };
 
 // Parses argv; on --help prints and returns the exit code in `exit_code`.

@@ -16,6 +16,7 @@
 #include "app/gl/raster_renderer.h"
 #include "app/render/options.h"
 #include "app/render/progress.h"
+#include "app/render/ray_tree_report.h"
 #include "core/compare.h"
 #include "core/error.h"
 #include "core/renderer.h"
@@ -58,6 +59,7 @@ class Job {
                             const char* label);
     void report_diff(const rt::Image& raster_image, const rt::Image& traced);
     void write_stats();
+    int ray_tree();
 
     const Options& o_;
     rt::LoadedScene loaded_;
@@ -216,6 +218,7 @@ int Job::run() {
     const rt::Scene& scene = *scene_;
     stats_["build_seconds"] = watch.lap();
     stats_["accel"] = rt::accel_name(o_.accel);
+    if (!o_.ray_tree.empty()) return ray_tree();
 
     if (o_.mode == Mode::kTrace) {
         write(trace(), main_output, o_);
@@ -245,6 +248,23 @@ int Job::run() {
 }
 
 }  // namespace
+
+// --ray-tree X,Y: the pixel's rays, printed (and written as JSON); no image.
+int Job::ray_tree() {
+    const auto comma = o_.ray_tree.find(',');
+    int x = -1, y = -1;
+    const char* s = o_.ray_tree.c_str();
+    const auto end = s + o_.ray_tree.size();
+    const bool parsed = comma != std::string::npos &&
+                        std::from_chars(s, s + comma, x).ptr == s + comma &&
+                        std::from_chars(s + comma + 1, end, y).ptr == end;
+    if (!parsed)
+        throw rt::Error("rtrender", "--ray-tree", "expected X,Y, got \"" + o_.ray_tree + "\"");
+    const rt::RayNode root = trace_pixel_tree(*scene_, scene_->camera, o_.trace, x, y);
+    print_ray_tree(*scene_, root, x, y);
+    if (!o_.ray_tree_json.empty()) write_ray_tree_json(root, x, y, o_.ray_tree_json);
+    return 0;
+}
 
 int run(const Options& options) { return Job(options).run(); }
 

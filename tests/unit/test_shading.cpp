@@ -202,20 +202,8 @@ TEST(Phong, SpecularIsRaisedToTheShininess) {
     expect_colour(c, vec3(0.8f / 32.0f), 1e-5f);
 }
 
-// A closed box from lo to hi, its faces wound outward (counter-clockwise seen from
-// outside) or, as some exporters and every mirrored model do, inward.
-enum class Winding { kOutward, kInward };
-TriangleMesh box_mesh(vec3 lo, vec3 hi, Winding winding) {
-    TriangleMesh box;
-    for (int i = 0; i < 8; ++i)
-        box.positions.push_back({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
-    box.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6},   // z = lo, z = hi
-                     {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3},   // y = lo, y = hi
-                     {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};  // x = lo, x = hi
-    if (winding == Winding::kInward)
-        for (auto& t : box.triangles) std::swap(t.y, t.z);
-    return box;
-}
+using test::box_mesh;
+using test::Winding;
 
 class GlassWinding : public ::testing::TestWithParam<Winding> {};
 INSTANTIATE_TEST_SUITE_P(Refraction, GlassWinding,

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# rtrender --ray-tree X,Y: the pixel's rays printed one a line and written as JSON; a
+# pixel outside the image, or not X,Y, is one located line and status 1.
+#   ray_tree.sh RTRENDER ASSETS_DIR OUT_DIR
+set -u
+rtrender=$1
+assets=$2
+out=$3
+rm -rf "$out"
+mkdir -p "$out"
+failures=0
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+
+# The Whitted scene's glass ball, at 160 x 120: in, out, and feelers on the way.
+scene="$assets/scenes/whitted.json"
+if ! "$rtrender" "$scene" --size 160x120 --ray-tree 100,70 --ray-tree-json "$out/tree.json" >"$out/tree.txt" 2>&1; then
+    fail "exit status $?: $(cat "$out/tree.txt")"
+fi
+grep -q "^pixel 100,70 (from the top left): colour (" "$out/tree.txt" || fail "no pixel line: $(head -n2 "$out/tree.txt")"
+grep -q "^  primary from " "$out/tree.txt" || fail "no primary ray line"
+grep -q "^    shadow to light 0" "$out/tree.txt" || fail "no shadow feeler under the primary ray"
+python3 - "$out/tree.json" <<'PY' || fail "the JSON is not the tree: $(head -c 300 "$out/tree.json")"
+import json, sys
+t = json.load(open(sys.argv[1]))
+assert t["pixel"] == [100, 70], t["pixel"]
+r = t["ray"]
+assert r["kind"] == "primary" and r["hit"] is not None, r["kind"]
+assert len(t["colour"]) == 3 and t["colour"] == r["colour"]
+kinds = set()
+def walk(n):
+    kinds.add(n["kind"])
+    for c in n["children"]:
+        walk(c)
+walk(r)
+assert {"primary", "shadow"} <= kinds, kinds
+PY
+lines=$(grep -c "" "$out/tree.txt")
+[ "$lines" -ge 3 ] || fail "only $lines lines"
+
+for bad in 160,0 0,120 -1,5 abc 5; do
+    if "$rtrender" "$scene" --size 160x120 --ray-tree "$bad" >"$out/bad.txt" 2>&1; then
+        fail "--ray-tree $bad: exit status 0"
+    fi
+    [ "$(grep -c "" "$out/bad.txt")" -eq 1 ] || fail "--ray-tree $bad: not one line: $(cat "$out/bad.txt")"
+    grep -q "^rtrender: --ray-tree: " "$out/bad.txt" || fail "--ray-tree $bad: $(cat "$out/bad.txt")"
+done
+
+echo "ray tree: $failures failures"
+[ "$failures" -eq 0 ]
