@@ -122,6 +122,9 @@ mutant shown-trace-takes-late-results app/viewer/refinement.h \
 mutant diff-against-the-full-raster app/viewer/viewer.cpp \
     'in.view == View::kDiff && coarse' 'false && coarse' \
     rtview ctest -R '^gui[.]' --output-on-failure
+mutant ray-tree-without-local-terms core/tracer.cpp \
+    'if (recorder_) recorder_->open().local = colour;' '' \
+    rt_tests $(unit 'RayTree.*')
 mutant typed-slider-values-unclamped app/viewer/viewer_panel.cpp \
     'constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;' \
     'constexpr ImGuiSliderFlags kClamp = 0;' rtview ctest -R '^gui[.]' --output-on-failure
