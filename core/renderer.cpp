@@ -149,7 +149,7 @@ Image render(const Scene& scene, const Camera& camera, const RenderOptions& opti
         for (int y = t.y0; y < t.y1; ++y) {
             for (int x = t.x0; x < t.x1; ++x) {
                 vec3 c = mine.shade_hit(camera.ray(x, y),
-                                          hits[static_cast<std::size_t>(y) * width + x], local);
+                                        hits[static_cast<std::size_t>(y) * width + x], local);
                 if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
                     nonfinite.fetch_add(1, std::memory_order_relaxed);
                     c = vec3(0.0f);
