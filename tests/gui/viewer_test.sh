@@ -117,7 +117,11 @@ check "at rest after the orbit the title says traced ($(xdotool getwindowname "$
     grep -q -- "- traced$" <(xdotool getwindowname "$wid")
 traced_before=$(log_count "^traced:")
 drag 1 300 300 330 300
-title=$(xdotool getwindowname "$wid")
+for _ in $(seq 30); do  # at once here; up to 3 s on a loaded machine
+    title=$(xdotool getwindowname "$wid")
+    grep -q -- "- tracing$" <<<"$title" && break
+    sleep 0.1
+done
 check "right after another orbit it says tracing ($title)" grep -q -- "- tracing$" <<<"$title"
 wait_for_log "^traced:" $((traced_before + 1))
 settle
