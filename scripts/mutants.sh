@@ -71,7 +71,7 @@ mutant refraction-indices-swapped core/tracer.cpp \
     'sp.normal, crossing.eta_from, crossing.eta_to)' 'sp.normal, crossing.eta_to, crossing.eta_from)' \
     rt_tests $(unit 'Refraction*:Refract.*')
 mutant tir-black core/tracer.cpp \
-    'return reflected(r, sp, path, counts);' 'return vec3(0.0f);' \
+    'return reflected(r, sp, mirrored, counts);' 'return vec3(0.0f);' \
     rt_tests $(unit 'Refraction*')
 mutant compare-counts-nothing core/compare.cpp \
     'd.pixels_over += largest > threshold;' 'd.pixels_over += 0;' \
@@ -135,7 +135,7 @@ mutant gl-debug-not-installed app/gl/debug.cpp \
     'glDebugMessageCallback(on_debug_message, nullptr);' '(void)on_debug_message;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*ContextIsCoreProfile*'
 mutant shadow-feeler-dropped core/tracer.cpp \
-    'return !scene_.occluded(Ray{p, dir}, t_max);' 'return true;' \
+    'const bool blocked = scene_.occluded(Ray{p, dir}, t_max);' 'const bool blocked = false;' \
     rt_tests $(unit 'Shadows.*')
 mutant pixel-centre-off-by-half core/camera.h \
     'static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f' \
@@ -202,7 +202,8 @@ mutant oracle-refraction-indices-swapped core/tracer.cpp \
 mutant oracle-glass-nesting-ignored core/medium.h \
     'Crossing c{ior(), 1.0f, *this};' 'Crossing c{1.0f, 1.0f, *this};' rtrender "${oracle[@]}"
 mutant oracle-shadow-feeler-dropped core/tracer.cpp \
-    'return !scene_.occluded(Ray{p, dir}, t_max);' 'return true;' rtrender "${oracle[@]}"
+    'const bool blocked = scene_.occluded(Ray{p, dir}, t_max);' 'const bool blocked = false;' \
+    rtrender "${oracle[@]}"
 mutant oracle-camera-fov-2-percent-wide core/camera.cpp \
     'std::tan(glm::radians(vfov_degrees) * 0.5f)' 'std::tan(glm::radians(vfov_degrees) * 0.51f)' \
     rtrender "${oracle[@]}"
