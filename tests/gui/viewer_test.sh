@@ -239,9 +239,10 @@ check "  ... and shadows end $expected ($(grep "^trace settings:" "$work/app.log
 after "^trace settings:" click $SHADOWS
 
 # The difference at a quarter of the window's resolution compares like with like: the
-# raster is drawn at the traced image's size, so with shadows off (the Cornell box then
-# has no effect the raster lacks) next to nothing lights up, at full resolution or at a
-# quarter (not every edge of a blocky trace against a sharp raster).
+# raster is drawn at the traced image's size, so with shadows off (the tutorial scene,
+# opened by the path field above, then has little the raster lacks) next to nothing
+# lights up, at full resolution or at a quarter (not every edge of a blocky trace against
+# a sharp raster).
 lit() { convert "$1" -crop "$((W - 50))x$H+0+0" -colorspace gray -threshold 2% -format "%[fx:round(mean*w*h)]" info:; }
 if grep -q "shadows on" <(grep "^trace settings:" "$work/app.log" | tail -n1); then
     after "^trace settings:" click $SHADOWS
