@@ -9,12 +9,16 @@
 
 #include <glm/common.hpp>
 
+#include "core/bitmap_font.h"
+
 namespace rt {
 namespace {
 
 vec3 encoded(const vec3& c) { return {srgb_encode(c.x), srgb_encode(c.y), srgb_encode(c.z)}; }
 
-bool finite(const vec3& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
+bool finite(const vec3& c) {
+    return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+}
 
 // Per channel, on the displayed values. A NaN or infinite pixel (a broken render) is as
 // far as a pixel can be from anything: 1 in every channel, never a NaN statistic.
@@ -26,41 +30,6 @@ vec3 pixel_difference(const vec3& a, const vec3& b) {
 // Colours given in sRGB terms are decoded, so that they show as written once encoded.
 vec3 from_srgb(float r, float g, float b) {
     return {srgb_decode(r), srgb_decode(g), srgb_decode(b)};
-}
-
-// A 3x5 pixel font for the scale's numbers.
-const std::array<std::uint16_t, 13>& glyphs() {
-    // Rows top to bottom, 3 bits each, for 0-9, '.', 'e', '-'.
-    static const std::array<std::uint16_t, 13> g = {
-        0b111101101101111, 0b010110010010111, 0b111001111100111, 0b111001111001111,
-        0b101101111001001, 0b111100111001111, 0b111100111101111, 0b111001010010010,
-        0b111101111101111, 0b111101111001111, 0b000000000000010, 0b000111101110011,
-        0b000000111000000};
-    return g;
-}
-
-void draw_text(Image& image, int x, int y_top, const std::string& text, int scale,
-               const vec3& colour) {
-    for (char ch : text) {
-        const int index = ch >= '0' && ch <= '9' ? ch - '0'
-                          : ch == '.'            ? 10
-                          : ch == 'e'            ? 11
-                          : ch == '-'            ? 12
-                                                 : -1;
-        if (index >= 0) {
-            const std::uint16_t bits = glyphs()[static_cast<std::size_t>(index)];
-            for (int row = 0; row < 5; ++row)
-                for (int col = 0; col < 3; ++col)
-                    if (bits >> (14 - (row * 3 + col)) & 1)
-                        for (int sy = 0; sy < scale; ++sy)
-                            for (int sx = 0; sx < scale; ++sx) {
-                                const int px = x + col * scale + sx, py = y_top - row * scale - sy;
-                                if (px >= 0 && py >= 0 && px < image.width && py < image.height)
-                                    image.at(px, py) = colour;
-                            }
-        }
-        x += 4 * scale;
-    }
 }
 
 std::string short_number(float v) {

@@ -51,27 +51,52 @@ RayHitRecord Tracer::hit_record(const Ray& r, const Hit& hit) const {
 }
 
 vec3 Tracer::shade(const Ray& r, const Hit& hit, const Path& path, RayCounts& counts) const {
+    PrimaryParts parts;
+    shade_parts(r, hit, path, counts, parts, false);
+    return parts.colour();
+}
+
+PrimaryParts Tracer::trace_parts(const Ray& r, RayCounts& counts) const {
+    ++counts.primary;
+    PrimaryParts parts;
+    Hit hit;
+    if (!scene_.intersect(r, hit)) {
+        parts.local = parts.unblocked = scene_.background;
+        return parts;
+    }
+    parts.object = hit.object;
+    shade_parts(r, hit, Path{}, counts, parts, true);
+    return parts;
+}
+
+void Tracer::shade_parts(const Ray& r, const Hit& hit, const Path& path, RayCounts& counts,
+                         PrimaryParts& parts, bool unblocked) const {
     const SurfacePoint sp = scene_.surface(r, hit);
     const Material& m = scene_.materials[sp.material];
     if (recorder_) recorder_->open().hit = hit_record(r, hit);
-    vec3 colour = phong(r, sp, counts);
-    if (recorder_) recorder_->open().local = colour;
-    if (path.depth >= options_.max_depth) return colour;
+    parts.local = phong(r, sp, counts, options_.shadows);
+    if (unblocked) parts.unblocked = options_.shadows ? phong(r, sp, counts, false) : parts.local;
+    if (recorder_) recorder_->open().local = parts.local;
+    if (path.depth >= options_.max_depth) return;
     // R_n = R_amb + R_diff + R_spec + reflectivity R_(n-1), and the same for transmission.
     if (options_.reflections && m.reflectivity * path.weight >= options_.min_weight) {
         const Path next{path.depth + 1, path.weight * m.reflectivity, path.media,
                         RayKind::kReflection};
-        colour += m.reflectivity * reflected(r, sp, next, counts);
+        parts.reflection = m.reflectivity * reflected(r, sp, next, counts);
     }
     if (options_.refractions && m.transparency * path.weight >= options_.min_weight) {
         const Path next{path.depth + 1, path.weight * m.transparency, path.media,
                         RayKind::kRefraction};
-        colour += m.transparency * refracted(r, hit, sp, next, counts);
+        parts.refraction = m.transparency * refracted(r, hit, sp, next, counts);
     }
-    return colour;
 }
 
 vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) const {
+    return phong(r, sp, counts, options_.shadows);
+}
+
+// With `feelers` off every light in front of the surface counts as seen.
+vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool feelers) const {
     const Material& m = scene_.materials[sp.material];
     const vec3 pattern = m.checker ? m.checker->at(sp.pattern_point) : vec3(1.0f);
     vec3 colour = m.ka * pattern * scene_.ambient;
@@ -87,7 +112,7 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) cons
         to_light /= distance;
         const float n_dot_l = glm::dot(sp.normal, to_light);
         if (n_dot_l <= 0.0f) continue;  // the light is behind the surface
-        if (!visible(p, sp, light, counts)) continue;
+        if (feelers && !visible(p, sp, light, counts)) continue;
         const vec3 mirrored = reflect_dir(-to_light, sp.normal);
         const float r_dot_v = std::max(0.0f, glm::dot(mirrored, to_viewer));
         const vec3 specular = r_dot_v > 0.0f ? m.ks * std::pow(r_dot_v, m.shininess) : vec3(0.0f);
@@ -98,7 +123,6 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) cons
 
 bool Tracer::visible(const vec3& p, const SurfacePoint& sp, const Light& light,
                      RayCounts& counts) const {
-    if (!options_.shadows) return true;
     vec3 dir;
     const float t_max = light.feeler(p, dir);
     if (glm::dot(dir, sp.geometric_normal) <= 0.0f) {

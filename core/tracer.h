@@ -45,6 +45,19 @@ struct Refraction {
 };
 Refraction refract_dir(const vec3& d, const vec3& n, float eta_from, float eta_to);
 
+// A camera ray's colour as the sum of its parts: the explain map's raw material
+// (core/explain.h). colour() is, bit for bit, what trace_primary returns.
+struct PrimaryParts {
+    std::uint32_t object = kNoObject;  // the first hit's object index, or kNoObject
+    vec3 unblocked{0.0f};              // local Phong with every light unblocked
+    vec3 local{0.0f};                  // local Phong as traced, shadow feelers and all
+    vec3 reflection{0.0f};             // the reflected ray's colour times the reflectivity
+    vec3 refraction{0.0f};             // the refracted ray's times the transparency
+
+    static constexpr std::uint32_t kNoObject = ~0u;
+    vec3 colour() const { return local + reflection + refraction; }
+};
+
 class Tracer {
   public:
     // With a recorder, every ray traced is also written into its tree (one pixel at a
@@ -56,6 +69,8 @@ class Tracer {
     vec3 trace_primary(const Ray& r, RayCounts& counts) const;
     // The same when the camera ray's first hit is already known (a miss: background).
     vec3 shade_hit(const Ray& r, const Hit& hit, RayCounts& counts) const;
+    // A camera ray's colour in parts (a miss: the background, as local and unblocked).
+    PrimaryParts trace_parts(const Ray& r, RayCounts& counts) const;
 
     // The local Phong term at a surface point: ka Ia + sum over lights of
     // visible(p, l) (kd max(0, n.l) + ks max(0, r.v)^shininess) I_l.
@@ -74,6 +89,10 @@ class Tracer {
     vec3 trace(const Ray& r, const Path& path, RayCounts& counts) const;
     vec3 trace_recorded(const Ray& r, const Path& path, RayCounts& counts) const;
     vec3 shade(const Ray& r, const Hit& hit, const Path& path, RayCounts& counts) const;
+    // shade's terms; with `parts`, also the local term with every light unblocked.
+    void shade_parts(const Ray& r, const Hit& hit, const Path& path, RayCounts& counts,
+                     PrimaryParts& parts, bool unblocked) const;
+    vec3 phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool feelers) const;
     vec3 reflected(const Ray& r, const SurfacePoint& sp, const Path& path, RayCounts& counts) const;
     vec3 refracted(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,
                    RayCounts& counts) const;

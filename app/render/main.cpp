@@ -1,5 +1,6 @@
 // rtrender: renders a scene headless, ray traced and/or through OpenGL.
-//   rtrender SCENE [-o OUT.png|OUT.exr] [--mode trace|raster|both|itembuffer] [--gl egl|osmesa]
+//   rtrender SCENE [-o OUT.png|OUT.exr] [--mode trace|raster|both|itembuffer|explain] [--gl
+//   egl|osmesa]
 //            [--item-buffer on|off] [--accel bvh|bvh2|grid|brute] [--size WxH] [--threads N]
 //            [--max-depth N] [--no-shadows]
 //            [--no-reflections] [--no-refractions] [--stats FILE.json] [--quiet] [--up AXIS]
@@ -22,7 +23,8 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     app.add_option("scene", o.scene, "Scene file (.json or .obj)")->required();
     app.add_option("-o,--output", o.output, "Output image (.png or .exr); default out/SCENE.png");
     app.add_option("--mode", o.mode,
-                   "trace, raster, both (raster, traced and difference) or itembuffer")
+                   "trace, raster, both (raster, traced and difference), itembuffer, or explain "
+                   "(why they differ: OUT.explain.png)")
         ->transform(rt::app::cli_names(kModeNames));
     app.add_option("--gl", o.gl, "OpenGL context: egl, osmesa, or auto (EGL, then OSMesa)")
         ->transform(rt::app::cli_names(rt::gl::kBackendNames));

@@ -10,11 +10,12 @@
 
 namespace rt::renderer {
 
-enum class Mode { kTrace, kRaster, kBoth, kItemBuffer };
+enum class Mode { kTrace, kRaster, kBoth, kItemBuffer, kExplain };
 inline constexpr rt::Named<Mode> kModeNames[] = {{"trace", Mode::kTrace},
                                                  {"raster", Mode::kRaster},
                                                  {"both", Mode::kBoth},
-                                                 {"itembuffer", Mode::kItemBuffer}};
+                                                 {"itembuffer", Mode::kItemBuffer},
+                                                 {"explain", Mode::kExplain}};
 
 struct Options {
     std::string scene;

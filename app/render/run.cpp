@@ -19,6 +19,7 @@
 #include "app/render/ray_tree_report.h"
 #include "core/compare.h"
 #include "core/error.h"
+#include "core/explain.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
 #include "core/stopwatch.h"
@@ -58,6 +59,7 @@ class Job {
     rt::Image render_traced(const rt::ItemBuffer* item_buffer, rt::RenderStats& stats,
                             const char* label);
     void report_diff(const rt::Image& raster_image, const rt::Image& traced);
+    void explain(const rt::Image& raster_image, bool write_map);
     void write_stats();
     int ray_tree();
 
@@ -176,6 +178,34 @@ void Job::report_diff(const rt::Image& raster_image, const rt::Image& traced) {
                     static_cast<unsigned long long>(d.non_finite));
 }
 
+// Why raster and traced differ (core/explain.h): the map as an image, the shares per
+// cause in the stats and on one line.
+void Job::explain(const rt::Image& raster_image, bool write_map) {
+    const rt::ItemBuffer ids = raster().render_item_buffer(scene_->camera);
+    rt::RenderOptions options;
+    options.threads = o_.threads;
+    options.trace = o_.trace;
+    rt::Stopwatch watch;
+    const rt::ExplainMap map = rt::explain(*scene_, scene_->camera, options, raster_image, ids);
+    stats_["explain_seconds"] = watch.seconds();
+    if (write_map) write(rt::explain_image(map), output_path(o_, "explain"), o_);
+    const auto shares = rt::cause_shares(map);
+    nlohmann::json causes = nlohmann::json::object();
+    std::string line;
+    for (std::size_t k = 0; k < rt::kCauseCount; ++k) {
+        const char* name = rt::kCauseNames[k].name;
+        causes[name] = {{"pixels", shares[k].pixels}, {"error", shares[k].error}};
+        if (shares[k].pixels == 0.0) continue;
+        char part[96];
+        std::snprintf(part, sizeof part, "%s%s %.2f%% of pixels, %.1f%% of the difference",
+                      line.empty() ? "" : "; ", name, 100.0 * shares[k].pixels,
+                      100.0 * shares[k].error);
+        line += part;
+    }
+    stats_["explain"] = causes;
+    if (!o_.quiet) std::printf("why they differ: %s\n", line.c_str());
+}
+
 void Job::write_stats() {
     const rt::Scene& scene = *scene_;
     stats_["scene"] = o_.scene;
@@ -231,11 +261,14 @@ int Job::run() {
         stats_["raster_seconds"] = watch.seconds();
         if (o_.mode == Mode::kRaster) {
             write(raster_image, main_output, o_);
+        } else if (o_.mode == Mode::kExplain) {
+            explain(raster_image, true);
         } else {
             const rt::Image traced = trace();
             write(raster_image, output_path(o_, "raster"), o_);
             write(traced, output_path(o_, "trace"), o_);
             report_diff(raster_image, traced);
+            if (!o_.stats.empty()) explain(raster_image, false);
         }
     }
     if (!o_.stats.empty()) write_stats();

@@ -110,9 +110,32 @@ if "$rtrender" "$assets/scenes/whitted.json" --mode both --item-buffer on --size
     done
     grep -q "raster vs traced: mean abs error" "$out/both.log" || fail "both: no comparison printed"
     grep -q "pixels disagree" "$out/both.log" || fail "both: no item-buffer report"
+    # Why they differ: a share per cause, each column summing to 1, and the pixels no cause
+    # explains are those the comparison counts as equal.
+    python3 - "$out/both.json" <<'PY' || fail "both: explain stats: $(cat "$out/both.json")"
+import json, sys
+s = json.load(open(sys.argv[1]))
+e = s["explain"]
+causes = ["geometry", "shading", "shadow", "reflection", "refraction", "none"]
+assert sorted(e) == sorted(causes), e
+for col in ("pixels", "error"):
+    assert abs(sum(e[c][col] for c in causes) - 1.0) < 1e-9, (col, e)
+assert abs(e["none"]["pixels"] - (1.0 - s["diff"]["share_over_threshold"])) < 1e-9, e
+assert e["shadow"]["pixels"] > 0 and e["reflection"]["pixels"] > 0 and e["refraction"]["pixels"] > 0, e
+PY
+    grep -q "why they differ: .*shadow" "$out/both.log" || fail "both: no explain line"
     echo "ok   both + item buffer"
 else
     fail "both: $(cat "$out/both.log")"
+fi
+
+# The explain map on its own: OUT.explain.png, the map over its legend strip.
+cases=$((cases + 1))
+if "$rtrender" "$assets/scenes/tutorial.json" --mode explain --size 120x90 -o "$out/why.png" \
+        >"$out/why.log" 2>&1 && [ -s "$out/why.explain.png" ] && [ ! -e "$out/why.png" ]; then
+    echo "ok   explain"
+else
+    fail "explain: $(cat "$out/why.log")"
 fi
 
 echo "$((cases - failures)) passed, $failures failed"

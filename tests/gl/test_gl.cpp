@@ -15,6 +15,7 @@
 #include "app/gl/texture.h"
 #include "core/compare.h"
 #include "core/error.h"
+#include "core/explain.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
 
@@ -101,6 +102,43 @@ TEST_P(Gl, RasterEqualsLocalTracingAwayFromSilhouettes) {
         EXPECT_LE(static_cast<double>(interior_off), 1e-3 * static_cast<double>(interior)) << name;
         EXPECT_LT(all.share_over, 0.03) << name << ": silhouettes only";
         EXPECT_GT(all.psnr_db, 25.0) << name;
+    }
+}
+
+// The explain map against the real raster image and item buffer, every shipped scene: the
+// terms add up to traced - raster at every pixel (1e-4 per channel), the traced colours
+// are the renderer's, and where the raster saw the tracer's object and the feelers
+// visibly darkened a pixel with no reflection or refraction (a shadow the raster does not
+// draw), the cause is shadow.
+TEST_P(Gl, ExplainTermsSumToTheDifferenceOfTheRealImages) {
+    for (const char* name : kScenes) {
+        const Scene scene(load(name, 160, 120));
+        gl::RasterRenderer raster(scene);
+        const Image r = raster.render(scene.camera);
+        const ItemBuffer ib = raster.render_item_buffer(scene.camera);
+        const ExplainMap map = explain(scene, scene.camera, {}, r, ib);
+        const Image traced = render(scene, {});
+        RenderOptions no_shadows;
+        no_shadows.trace.shadows = false;
+        const Image unshadowed = render(scene, no_shadows);
+        std::size_t shadowed = 0, called_shadow = 0;
+        for (std::size_t i = 0; i < r.pixels.size(); ++i) {
+            ASSERT_EQ(map.traced.pixels[i], traced.pixels[i]) << name << " pixel " << i;
+            const vec3 want = traced.pixels[i] - r.pixels[i], got = map.terms[i].sum();
+            for (int k = 0; k < 3; ++k)
+                ASSERT_NEAR(got[k], want[k], 1e-4f) << name << " pixel " << i << " channel " << k;
+            const vec3 darkening = unshadowed.pixels[i] - traced.pixels[i];
+            // Off mirrors and glass (whose reflections hold shadows of their own).
+            const ExplainTerms& t = map.terms[i];
+            const bool local_only = t.reflection == vec3(0.0f) && t.refraction == vec3(0.0f);
+            if (t.geometry == vec3(0.0f) && local_only &&
+                std::min({darkening.x, darkening.y, darkening.z}) > 0.1f) {
+                ++shadowed;
+                called_shadow += map.cause[i] == Cause::kShadow;
+            }
+        }
+        EXPECT_GT(shadowed, 100u) << name;
+        EXPECT_GE(static_cast<double>(called_shadow), 0.95 * static_cast<double>(shadowed)) << name;
     }
 }
 

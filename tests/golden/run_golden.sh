@@ -9,4 +9,6 @@ shift 11
 work=$report/work
 mkdir -p "$work"
 "$rtrender" "$scene" -o "$work/$name.png" --size 160x120 --quiet "$@"
+# --mode explain writes OUT.explain.png beside the name it is given.
+if [ -f "$work/$name.explain.png" ]; then mv "$work/$name.explain.png" "$work/$name.png"; fi
 "$rtgolden" compare "$name" "$work/$name.png" "$refs" "$report" --fail "$fail" --fail-percent "$fail_percent" --edges "$edges" --as "$reference"
