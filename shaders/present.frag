@@ -7,8 +7,9 @@ uniform sampler2D u_traced;
 uniform usampler2D u_ids;
 uniform sampler2D u_heat;     // core's heat_colour(t), 256 texels
 uniform sampler2D u_palette;  // core's item_colour(id), one texel per id
+uniform sampler2D u_explain;  // core's explain_colours: each pixel its cause's colour
 uniform int u_palette_size;
-uniform int u_view;           // 0 raster, 1 traced, 2 split, 3 difference, 4 item buffer
+uniform int u_view;           // 0 raster, 1 traced, 2 split, 3 difference, 4 item buffer, 5 why
 uniform vec3 u_viewport;      // width, height
 uniform float u_divider;
 uniform int u_swap;
@@ -52,6 +53,8 @@ void main() {
         uint id = texture(u_ids, uv).r;
         int index = int(id % uint(u_palette_size));
         colour = srgb_encode(texelFetch(u_palette, ivec2(index, 0), 0).rgb);
+    } else if (u_view == 5) {
+        colour = srgb_encode(texture(u_explain, uv).rgb);
     }
     o_colour = vec4(colour, 1.0);
 }

@@ -26,9 +26,10 @@ void Compositor::set_item_palette(std::size_t object_count) {
 
 void Compositor::draw(const CompositeInputs& in, int width, int height) {
     program_.use();
-    const GLuint textures[] = {in.raster, in.traced, in.item_buffer, heat_map_.id(), palette_.id()};
-    const char* names[] = {"u_raster", "u_traced", "u_ids", "u_heat", "u_palette"};
-    for (int i = 0; i < 5; ++i) {
+    const GLuint textures[] = {in.raster,      in.traced,     in.item_buffer,
+                               heat_map_.id(), palette_.id(), in.explain};
+    const char* names[] = {"u_raster", "u_traced", "u_ids", "u_heat", "u_palette", "u_explain"};
+    for (int i = 0; i < 6; ++i) {
         glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(i));
         glBindTexture(GL_TEXTURE_2D, textures[i]);
         program_.set(names[i], i);

@@ -1,6 +1,7 @@
 #pragma once
 // Puts a view on the screen: the raster image, the traced image, the two split at a
-// divider, their difference in false colour, or the item buffer; encoded to sRGB
+// divider, their difference in false colour, the item buffer, or why they differ (the
+// explain map); encoded to sRGB
 // by the same transfer function as the files.
 
 #include "app/gl/handle.h"
@@ -9,8 +10,8 @@
 
 namespace rt::gl {
 
-// In the order of the keys 1 to 5 (the viewer relies on it).
-enum class View { kRaster, kTrace, kSplit, kDiff, kItemBuffer };
+// In the order of the keys 1 to 6 (the viewer relies on it).
+enum class View { kRaster, kTrace, kSplit, kDiff, kItemBuffer, kWhy };
 
 // How the difference view shows raster - traced (sRGB values).
 enum class DiffMode {
@@ -23,6 +24,7 @@ struct CompositeInputs {
     GLuint raster = 0;       // RGBA32F, linear
     GLuint traced = 0;       // RGB32F, linear, any resolution (coarse while moving)
     GLuint item_buffer = 0;  // R32UI object ids
+    GLuint explain = 0;      // RGB32F, linear: core's explain map in colour (the why view)
     View view = View::kSplit;
     float divider = 0.5f;     // split: the divider's x as a share of the width
     bool swap = false;        // split: traced on the left

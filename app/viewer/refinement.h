@@ -21,6 +21,7 @@ struct TraceKey {
     int max_depth = 5;
     bool item_buffer = false;
     int threads = 0;
+    bool explain = false;  // traced in parts against the raster: the why view
 
     bool operator==(const TraceKey&) const = default;
 };

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/stopwatch.h"
+
 namespace rt::viewer {
 
 TraceJob::TraceJob(std::function<void()> on_publish)
@@ -66,10 +68,12 @@ void TraceJob::loop(std::stop_token stop) {
 
 void TraceJob::run(const TraceRequest& request, std::stop_token cancel) {
     const rt::Camera& full = request.camera;
-    for (int level : request.levels) {
+    for (std::size_t i = 0; i < request.levels.size(); ++i) {
+        const int level = request.levels[i];
         const rt::Camera camera =
             full.resized(std::max(1, full.cols / level), std::max(1, full.rows / level));
-        const bool use_ib = level == 1 && request.item_buffer &&
+        const RasterFrame* raster = i < request.explain.size() ? request.explain[i].get() : nullptr;
+        const bool use_ib = !raster && level == 1 && request.item_buffer &&
                             request.item_buffer->width == camera.cols &&
                             request.item_buffer->height == camera.rows;
         TraceResult result;
@@ -79,10 +83,14 @@ void TraceJob::run(const TraceRequest& request, std::stop_token cancel) {
         const auto on_progress = [&](int done, int total) {
             progress_ = static_cast<float>(done) / static_cast<float>(total);
         };
-        result.image =
-            rt::render(*request.scene, camera, request.options, &result.stats, on_progress, cancel,
-                       use_ib ? request.item_buffer.get() : nullptr);
-        if (result.stats.cancelled) return;
+        if (raster) {
+            if (!explain_level(request, camera, *raster, cancel, result)) return;
+        } else {
+            result.image =
+                rt::render(*request.scene, camera, request.options, &result.stats, on_progress,
+                           cancel, use_ib ? request.item_buffer.get() : nullptr);
+            if (result.stats.cancelled) return;
+        }
         if (use_ib) {
             rt::RenderStats plain_stats;
             const rt::Image plain =
@@ -100,6 +108,25 @@ void TraceJob::run(const TraceRequest& request, std::stop_token cancel) {
         }
         if (on_publish_) on_publish_();
     }
+}
+
+bool TraceJob::explain_level(const TraceRequest& request, const rt::Camera& camera,
+                             const RasterFrame& raster, std::stop_token cancel,
+                             TraceResult& result) {
+    if (raster.image.width != camera.cols || raster.image.height != camera.rows) return false;
+    const rt::Stopwatch watch;
+    auto explanation = std::make_shared<Explanation>();
+    explanation->map =
+        rt::explain(*request.scene, camera, request.options, raster.image, raster.ids, cancel);
+    if (explanation->map.cancelled) return false;
+    explanation->colours = rt::explain_colours(explanation->map);
+    explanation->shares = rt::cause_shares(explanation->map);
+    result.image = explanation->map.traced;
+    result.stats.rays = explanation->map.rays;
+    result.stats.threads = rt::resolve_thread_count(request.options.threads);
+    result.stats.seconds = result.stats.secondary_seconds = watch.seconds();
+    result.explanation = std::move(explanation);
+    return true;
 }
 
 }  // namespace rt::viewer

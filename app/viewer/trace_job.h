@@ -14,11 +14,18 @@
 #include <thread>
 #include <vector>
 
+#include "core/explain.h"
 #include "core/item_buffer.h"
 #include "core/renderer.h"
 #include "core/scene.h"
 
 namespace rt::viewer {
+
+// What the raster pipeline drew at one level's size, for the explain map (the "why" view).
+struct RasterFrame {
+    rt::Image image;
+    rt::ItemBuffer ids;
+};
 
 struct TraceRequest {
     std::shared_ptr<const rt::Scene> scene;  // kept alive until the worker is done with it
@@ -28,7 +35,16 @@ struct TraceRequest {
     // For the full-resolution level: primary hits from the raster item buffer, and then
     // the same frame again without it, to measure what it saved and where it differs.
     std::shared_ptr<const rt::ItemBuffer> item_buffer;
+    // For the why view: one raster frame per level, in the levels' order. Each level is
+    // then traced in parts (rt::explain), giving the traced image and its explanation.
+    std::vector<std::shared_ptr<const RasterFrame>> explain;
     std::uint64_t id = 0;
+};
+
+struct Explanation {
+    rt::Image colours;  // rt::explain_colours
+    std::array<rt::CauseShare, rt::kCauseCount> shares{};
+    rt::ExplainMap map;  // per pixel, for the pixel inspector
 };
 
 struct TraceResult {
@@ -38,6 +54,7 @@ struct TraceResult {
     rt::RenderStats stats;
     std::optional<rt::RenderStats> without_item_buffer;  // with an item buffer only
     std::uint64_t item_buffer_disagreements = 0;
+    std::shared_ptr<const Explanation> explanation;  // when the request asked for one
 };
 
 class TraceJob {
@@ -59,6 +76,9 @@ class TraceJob {
   private:
     void loop(std::stop_token stop);
     void run(const TraceRequest& request, std::stop_token cancel);
+    // One level traced in parts against its raster frame; false if cancelled.
+    bool explain_level(const TraceRequest& request, const rt::Camera& camera,
+                       const RasterFrame& raster, std::stop_token cancel, TraceResult& result);
 
     std::mutex mutex_;
     std::condition_variable_any wake_;

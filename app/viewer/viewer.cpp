@@ -114,6 +114,8 @@ void Viewer::install(std::shared_ptr<const rt::Scene> scene, const std::string& 
     traced_image_ = rt::Image(1, 1);
     traced_image_.pixels[0] = scene_->background;
     traced_texture_.upload(traced_image_);
+    explain_texture_.upload(rt::Image(1, 1));
+    explanation_.reset();
     stats_ = FrameStats{};
     raster_camera_.reset();
     ids_camera_.reset();
@@ -144,6 +146,7 @@ TraceKey Viewer::trace_key() const {
     key.max_depth = settings_.max_depth;
     key.item_buffer = settings_.item_buffer;
     key.threads = settings_.threads;
+    key.explain = explain_;
     return key;
 }
 
@@ -167,6 +170,15 @@ void Viewer::log_trace_settings(const TraceKey& key) {
 // The schedule (refinement.h) says when and at which levels; the item buffer is made
 // for chains that reach full resolution.
 void Viewer::update_trace() {
+    if (shown_view() == View::kWhy) {
+        explain_ = true;
+    } else if (explain_) {
+        TraceKey plain = trace_key();
+        plain.explain = false;
+        TraceKey parts = plain;
+        parts.explain = true;
+        if (shown_.stale(parts)) explain_ = false;  // something else changed: trace plainly
+    }
     const TraceKey key = trace_key();
     std::vector<int> levels = schedule_.update(key, clock_.seconds());
     if (levels.empty()) return;
@@ -187,9 +199,24 @@ void Viewer::update_trace() {
         stats_.item_buffer_ms = watch.milliseconds();
         ids_camera_.reset();  // the pass drew over the item-buffer view's texture
     }
+    if (key.explain) raster_frames(request);
     request.id = ++request_id_;
     shown_.submitted(request_id_, key);
     tracer_.submit(std::move(request));
+}
+
+// The raster image and item buffer at each level's size, for the explain map.
+void Viewer::raster_frames(TraceRequest& request) {
+    for (int level : request.levels) {
+        const rt::Camera camera = request.camera.resized(std::max(1, request.camera.cols / level),
+                                                         std::max(1, request.camera.rows / level));
+        auto frame = std::make_shared<RasterFrame>();
+        frame->image = raster_->render(camera);
+        frame->ids = raster_->render_item_buffer(camera);
+        request.explain.push_back(std::move(frame));
+    }
+    raster_camera_.reset();  // the passes drew over the views' textures
+    ids_camera_.reset();
 }
 
 void Viewer::collect_trace() {
@@ -197,6 +224,10 @@ void Viewer::collect_trace() {
     if (!result || result->id != request_id_) return;
     traced_image_ = std::move(result->image);
     traced_texture_.upload(traced_image_);
+    if (result->explanation) {
+        explanation_ = std::move(result->explanation);
+        explain_texture_.upload(explanation_->colours);
+    }
     shown_.arrived(result->id, result->level);
     stats_.shown = result->stats;
     stats_.trace_ms.add(static_cast<float>(1e3 * result->stats.seconds));
@@ -261,7 +292,8 @@ void Viewer::draw_views(int width, int height) {
     in.diff_mode = display_.diff_mode;
     in.diff_threshold = display_.diff_threshold;
     in.traced = traced_texture_.id();
-    if (in.view != View::kTrace && in.view != View::kItemBuffer) {
+    in.explain = explain_texture_.id();
+    if (in.view != View::kTrace && in.view != View::kItemBuffer && in.view != View::kWhy) {
         const bool coarse = traced_image_.width < width || traced_image_.height < height;
         in.raster =
             raster_texture(in.view == View::kDiff && coarse

@@ -128,6 +128,8 @@ class Viewer {
     void draw_diff_controls();
     void draw_statistics();
     void draw_item_legend();
+    void draw_why_legend();
+    void raster_frames(TraceRequest& request);
     void draw_raster_legend();
     void draw_light_markers(ImDrawList* draw, int width, int height, float scale);
     std::string traced_label() const;
@@ -152,6 +154,11 @@ class Viewer {
     TraceJob tracer_;
     rt::gl::Texture traced_texture_;
     rt::Image traced_image_;  // what traced_texture_ holds
+    rt::gl::Texture explain_texture_;
+    std::shared_ptr<const Explanation> explanation_;  // what explain_texture_ holds
+    // Trace in parts for the why view: on from when it is shown until the camera or a
+    // setting changes with another view shown (a view change alone never retraces).
+    bool explain_ = false;
 
     Settings settings_;
     RefinementSchedule schedule_;

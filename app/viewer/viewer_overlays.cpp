@@ -118,9 +118,15 @@ void Viewer::draw_overlays(int width, int height) {
         label(draw, ImVec2(w * 0.5f - 0.5f * ImGui::CalcTextSize(text.c_str()).x, h - 30.0f),
               text.c_str());
     } else {
-        const std::string text = view == View::kRaster  ? std::string("OpenGL")
-                                 : view == View::kTrace ? traced
-                                                        : std::string("item buffer (object ids)");
+        const std::string text =
+            view == View::kRaster       ? std::string("OpenGL")
+            : view == View::kTrace      ? traced
+            : view == View::kItemBuffer ? std::string("item buffer (object ids)")
+            : traced_stale() || !explanation_
+                ? std::string("why they differ - tracing...")
+                : "why they differ: each pixel's largest term" +
+                      (shown_.level() > 1 ? ", 1/" + std::to_string(shown_.level()) + " resolution"
+                                          : std::string());
         label(draw, ImVec2(w * 0.5f - 0.5f * ImGui::CalcTextSize(text.c_str()).x, h - 30.0f),
               text.c_str());
     }

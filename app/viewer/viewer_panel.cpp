@@ -139,7 +139,10 @@ void Viewer::draw_panel() {
     }
     if (display_.view == View::kDiff) draw_diff_controls();
     if (display_.view == View::kItemBuffer) draw_item_legend();
-    if (display_.view != View::kTrace && display_.view != View::kItemBuffer) draw_raster_legend();
+    if (display_.view == View::kWhy) draw_why_legend();
+    if (display_.view == View::kRaster || display_.view == View::kSplit ||
+        display_.view == View::kDiff)
+        draw_raster_legend();
 
     draw_statistics();
     ImGui::Separator();

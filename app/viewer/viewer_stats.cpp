@@ -85,6 +85,38 @@ void Viewer::draw_item_legend() {
     ImGui::TextDisabled("black: no object (the background)");
 }
 
+// The why view's causes: colour, name, and their shares of the image on screen.
+void Viewer::draw_why_legend() {
+    static const char* const kMeaning[] = {"the pipelines see different objects first",
+                                           "same object, different local Phong",
+                                           "light the shadow feelers found blocked",
+                                           "the mirror term",
+                                           "the transmitted term",
+                                           "the images agree to 2/255"};
+    if (ImGui::BeginTable("causes", 3, ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("cause");
+        ImGui::TableSetupColumn("pixels");
+        ImGui::TableSetupColumn("of the diff");
+        ImGui::TableHeadersRow();
+        for (std::size_t k = 0; k < rt::kCauseCount; ++k) {
+            ImGui::TableNextColumn();
+            ImGui::ColorButton("##cause", imgui_colour(rt::cause_colour(rt::kCauseNames[k].value)),
+                               ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoPicker,
+                               ImVec2(12.0f, 12.0f));
+            ImGui::SameLine();
+            ImGui::TextUnformatted(rt::kCauseNames[k].name);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kMeaning[k]);
+            ImGui::TableNextColumn();
+            if (explanation_) ImGui::Text("%5.1f %%", 100.0 * explanation_->shares[k].pixels);
+            ImGui::TableNextColumn();
+            if (explanation_) ImGui::Text("%5.1f %%", 100.0 * explanation_->shares[k].error);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::TextDisabled("traced - raster, split into terms that sum to it;");
+    ImGui::TextDisabled("a pixel's colour is its largest term (docs/explain.md)");
+}
+
 // Why the classic pipeline's picture lacks what the tracer shows.
 void Viewer::draw_raster_legend() {
     const auto& m = scene_->materials;

@@ -1,5 +1,5 @@
 #pragma once
-// The viewer's views, once: their order is that of the keys 1 to 5; `name` is what
+// The viewer's views, once: their order is that of the keys 1 to 6; `name` is what
 // --view takes, `label` what the panel, the help, the title bar and the log show.
 
 #include <cstddef>
@@ -19,7 +19,8 @@ inline constexpr ViewInfo kViews[] = {{"raster", rt::gl::View::kRaster, "raster"
                                       {"trace", rt::gl::View::kTrace, "traced"},
                                       {"split", rt::gl::View::kSplit, "split"},
                                       {"diff", rt::gl::View::kDiff, "difference"},
-                                      {"itembuffer", rt::gl::View::kItemBuffer, "item buffer"}};
+                                      {"itembuffer", rt::gl::View::kItemBuffer, "item buffer"},
+                                      {"why", rt::gl::View::kWhy, "why"}};
 inline constexpr std::size_t kViewCount = std::size(kViews);
 
 constexpr bool views_in_key_order() {

@@ -11,6 +11,8 @@ scene=$scenes/tutorial.json  # 4:3, so rtrender at 800x600 sees exactly the wind
 W=800 H=600
 "$rtrender" "$scene" --mode both --size ${W}x$H -q -o "$work/ref.png"
 "$rtrender" "$scene" --size ${W}x$H -q --no-shadows -o "$work/ref_noshadow.png"
+"$rtrender" "$scene" --mode explain --size ${W}x$H -q -o "$work/ref.png"
+convert "$work/ref.explain.png" -crop ${W}x$H+0+0 +repage "$work/ref.why.png"  # the legend strip off
 # Where the panel's check boxes are (its layout is fixed: ray-tracer settings first).
 SHADOWS="27 130" ITEM_BUFFER="27 153" MAX_DEPTH="120 176" RESOLUTION="120 199"
 OPEN_FIELD="100 69"
@@ -77,6 +79,12 @@ check "  ... and is black where they agree" at_most 100 "$work/diff.png" "$work/
 after "^view: item buffer" key 5 && settle
 grab ids
 check "item-buffer view shows the object ids" at_most 100 "$work/ids.png" "$work/ref.ids.png"
+# The why view: the tracer starts again in parts; at full resolution it is rtrender's map.
+traced=$(log_count "^traced:")
+after "^view: why" key 6
+wait_for_log "^traced:" $((traced + 1)) && settle
+grab why
+check "why view shows rtrender's explain map" at_most 100 "$work/why.png" "$work/ref.why.png"
 after "^view: split" key 3 && settle
 
 # Save: the view and the raster, traced and difference images behind it.
