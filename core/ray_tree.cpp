@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <glm/geometric.hpp>
+
 namespace rt {
 
 const char* ray_kind_name(RayKind kind) {
@@ -16,6 +18,34 @@ const char* ray_kind_name(RayKind kind) {
             return "refraction";
     }
     return "?";
+}
+
+std::vector<RaySegment> ray_segments(const RayNode& root, const std::vector<Light>& lights,
+                                     float miss_length) {
+    std::vector<RaySegment> out;
+    const auto add = [&](const auto& self, const RayNode& n) -> void {
+        RaySegment s;
+        s.a = n.origin;
+        s.kind = n.kind;
+        s.blocked = n.blocked;
+        const float length = glm::length(n.direction);
+        const vec3 unit = length > 0.0f ? n.direction / length : vec3(0.0f);
+        if (n.kind == RayKind::kShadow) {
+            // A point light's feeler is l - p: it ends at the light (t = 1).
+            const bool point = n.light >= 0 && static_cast<std::size_t>(n.light) < lights.size() &&
+                               lights[static_cast<std::size_t>(n.light)].type == Light::Type::kPoint;
+            s.b = point ? n.origin + n.direction : n.origin + miss_length * unit;
+        } else if (n.hit) {
+            s.b = n.hit->point;
+        } else {
+            s.b = n.origin + miss_length * unit;
+            s.miss = true;
+        }
+        out.push_back(s);
+        for (const RayNode& c : n.children) self(self, c);
+    };
+    add(add, root);
+    return out;
 }
 
 RayNode& RayTreeRecorder::begin(RayKind kind, const Ray& r, float weight) {

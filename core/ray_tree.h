@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/light.h"
 #include "core/ray.h"
 
 namespace rt {
@@ -57,6 +58,18 @@ class RayTreeRecorder {
     bool started_ = false;
     std::vector<RayNode*> stack_;  // the open rays: parents never move while a child is open
 };
+
+// The tree as line segments, for drawing it in the scene: each ray from its origin to its
+// hit; a miss `miss_length` long; a shadow feeler to its light (or, for a directional
+// light, `miss_length` towards it), marked blocked or not.
+struct RaySegment {
+    vec3 a{0.0f}, b{0.0f};
+    RayKind kind = RayKind::kPrimary;
+    bool blocked = false;  // shadow feelers
+    bool miss = false;     // drawn to a fixed length: it hit nothing
+};
+std::vector<RaySegment> ray_segments(const RayNode& root, const std::vector<Light>& lights,
+                                     float miss_length);
 
 // Depth of the tree in bounces: 0 for a primary ray alone; shadow feelers do not count.
 int bounce_depth(const RayNode& node);

@@ -17,6 +17,14 @@ Refraction refract_dir(const vec3& d, const vec3& n, float eta_from, float eta_t
     return {false, eta * d + (eta * cos_i - cos_t) * n};
 }
 
+RayNode trace_ray_tree(const Scene& scene, const Camera& camera, const TraceOptions& options,
+                       int x, int y) {
+    RayTreeRecorder recorder;
+    RayCounts counts;
+    Tracer(scene, options, &recorder).trace_primary(camera.ray(x, y), counts);
+    return recorder.root();
+}
+
 vec3 Tracer::trace_primary(const Ray& r, RayCounts& counts) const {
     ++counts.primary;
     return trace(r, Path{}, counts);

@@ -106,4 +106,9 @@ class Tracer {
     RayTreeRecorder* recorder_ = nullptr;
 };
 
+// The ray tree of one pixel of `camera` (x, y from the bottom-left, as Image; inside the
+// image), recorded by the tracer as it traces the pixel.
+RayNode trace_ray_tree(const Scene& scene, const Camera& camera, const TraceOptions& options,
+                       int x, int y);
+
 }  // namespace rt

@@ -8,6 +8,8 @@ uniform usampler2D u_ids;
 uniform sampler2D u_heat;     // core's heat_colour(t), 256 texels
 uniform sampler2D u_palette;  // core's item_colour(id), one texel per id
 uniform sampler2D u_explain;  // core's explain_colours: each pixel its cause's colour
+uniform sampler2D u_overlay;  // a picked pixel's rays, alpha 0 elsewhere
+uniform int u_overlay_on;
 uniform int u_palette_size;
 uniform int u_view;           // 0 raster, 1 traced, 2 split, 3 difference, 4 item buffer, 5 why
 uniform vec3 u_viewport;      // width, height
@@ -55,6 +57,10 @@ void main() {
         colour = srgb_encode(texelFetch(u_palette, ivec2(index, 0), 0).rgb);
     } else if (u_view == 5) {
         colour = srgb_encode(texture(u_explain, uv).rgb);
+    }
+    if (u_overlay_on == 1) {
+        vec4 rays = texture(u_overlay, uv);
+        colour = mix(colour, srgb_encode(rays.rgb), rays.a);
     }
     o_colour = vec4(colour, 1.0);
 }

@@ -26,10 +26,11 @@ void Compositor::set_item_palette(std::size_t object_count) {
 
 void Compositor::draw(const CompositeInputs& in, int width, int height) {
     program_.use();
-    const GLuint textures[] = {in.raster,      in.traced,     in.item_buffer,
-                               heat_map_.id(), palette_.id(), in.explain};
-    const char* names[] = {"u_raster", "u_traced", "u_ids", "u_heat", "u_palette", "u_explain"};
-    for (int i = 0; i < 6; ++i) {
+    const GLuint textures[] = {in.raster,     in.traced,  in.item_buffer, heat_map_.id(),
+                               palette_.id(), in.explain, in.overlay};
+    const char* names[] = {"u_raster",  "u_traced",  "u_ids",    "u_heat",
+                           "u_palette", "u_explain", "u_overlay"};
+    for (int i = 0; i < 7; ++i) {
         glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(i));
         glBindTexture(GL_TEXTURE_2D, textures[i]);
         program_.set(names[i], i);
@@ -44,6 +45,7 @@ void Compositor::draw(const CompositeInputs& in, int width, int height) {
     program_.set("u_diff_mode", static_cast<int>(in.diff_mode));
     program_.set("u_diff_threshold", in.diff_threshold);
     program_.set("u_palette_size", palette_.width());
+    program_.set("u_overlay_on", in.overlay != 0 ? 1 : 0);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(vao_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);

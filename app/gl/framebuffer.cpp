@@ -58,6 +58,26 @@ Image Framebuffer::read_colour() const {
     return image;
 }
 
+vec3 Framebuffer::read_pixel(int x, int y) const {
+    vec3 c(0.0f);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(x, y, 1, 1, GL_RGB, GL_FLOAT, &c.x);
+    check("read_pixel");
+    return c;
+}
+
+std::uint32_t Framebuffer::read_id(int x, int y) const {
+    std::uint32_t id = 0;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(x, y, 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &id);
+    check("read_id");
+    return id;
+}
+
 ItemBuffer Framebuffer::read_item_buffer() const {
     ItemBuffer ib(width_, height_);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());

@@ -26,6 +26,9 @@ class Framebuffer {
 
     Image read_colour() const;
     ItemBuffer read_item_buffer() const;
+    // One pixel (x, y from the bottom left): a colour, or an item buffer's object id + 1.
+    vec3 read_pixel(int x, int y) const;
+    std::uint32_t read_id(int x, int y) const;
 
   private:
     Kind kind_;

@@ -35,6 +35,8 @@ class RasterRenderer {
     // The two passes into whatever framebuffer is bound.
     void draw(const Camera& camera);
     void draw_ids(const Camera& camera);
+    // The near and far planes these passes use for `camera`.
+    DepthRange depth_range(const Camera& camera) const { return gpu_.depth_range(camera); }
 
   private:
     void set_camera(Program& program, const Camera& camera);

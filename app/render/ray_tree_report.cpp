@@ -78,10 +78,7 @@ RayNode trace_pixel_tree(const Scene& scene, const Camera& camera, const TraceOp
         throw Error("rtrender", "--ray-tree",
                     "pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
                         std::to_string(camera.cols) + "x" + std::to_string(camera.rows) + " image");
-    RayTreeRecorder recorder;
-    RayCounts counts;
-    Tracer(scene, options, &recorder).trace_primary(camera.ray(x, camera.rows - 1 - y), counts);
-    return recorder.root();
+    return trace_ray_tree(scene, camera, options, x, camera.rows - 1 - y);
 }
 
 void print_ray_tree(const Scene& scene, const RayNode& root, int x, int y) {

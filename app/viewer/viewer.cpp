@@ -85,6 +85,7 @@ Viewer::Viewer(const ViewerOptions& options)
     });
     window_.init_imgui();
     compositor_ = std::make_unique<rt::gl::Compositor>();
+    rays_ = std::make_unique<rt::gl::RayOverlay>();
     std::printf("OpenGL: %s\n", window_.description().c_str());
     install(std::move(first_scene_), options.scene);
 }
@@ -116,6 +117,8 @@ void Viewer::install(std::shared_ptr<const rt::Scene> scene, const std::string& 
     traced_texture_.upload(traced_image_);
     explain_texture_.upload(rt::Image(1, 1));
     explanation_.reset();
+    clear_picked();
+    inspected_.reset();
     stats_ = FrameStats{};
     raster_camera_.reset();
     ids_camera_.reset();
@@ -156,8 +159,10 @@ void Viewer::log_trace_settings(const TraceKey& key) {
     TraceKey settings = key;
     settings.camera_version = 0;
     settings.width = settings.height = 0;
+    settings.explain = false;  // how it is traced, not what
     if (logged_settings_ && *logged_settings_ == settings) return;
     logged_settings_ = settings;
+    if (picked_) trace_picked();  // its rays as the new settings cast them
     const auto on = [](bool b) { return b ? "on" : "off"; };
     std::printf(
         "trace settings: shadows %s, reflections %s, refractions %s, max depth %d, "
@@ -187,10 +192,7 @@ void Viewer::update_trace() {
     request.scene = scene_;
     request.camera = trace_camera();
     request.options.threads = settings_.threads;
-    request.options.trace.shadows = settings_.shadows;
-    request.options.trace.reflections = settings_.reflections;
-    request.options.trace.refractions = settings_.refractions;
-    request.options.trace.max_depth = settings_.max_depth;
+    request.options.trace = trace_options();
     request.levels = std::move(levels);
     if (settings_.item_buffer && request.levels.back() == 1) {
         const rt::Stopwatch watch;
@@ -261,7 +263,8 @@ bool Viewer::traced_stale() const { return shown_.stale(trace_key()); }
 GLuint Viewer::raster_texture(const rt::Camera& camera) {
     if (raster_camera_ != camera) {
         const rt::Stopwatch watch;
-        raster_texture_ = raster_->render_to_texture(camera).texture();
+        raster_fb_ = &raster_->render_to_texture(camera);
+        raster_texture_ = raster_fb_->texture();
         glFinish();  // so that the time is the GPU's too
         stats_.raster_ms = watch.milliseconds();
         stats_.raster_width = camera.cols;
@@ -273,7 +276,8 @@ GLuint Viewer::raster_texture(const rt::Camera& camera) {
 
 GLuint Viewer::item_buffer_texture(const rt::Camera& camera) {
     if (ids_camera_ != camera) {
-        ids_texture_ = raster_->render_item_buffer_to_texture(camera).texture();
+        ids_fb_ = &raster_->render_item_buffer_to_texture(camera);
+        ids_texture_ = ids_fb_->texture();
         ids_camera_ = camera;
     }
     return ids_texture_;
@@ -302,6 +306,7 @@ void Viewer::draw_views(int width, int height) {
     }
     if (in.view == View::kItemBuffer)
         in.item_buffer = item_buffer_texture(controller_->camera(width, height));
+    if (!rays_->empty()) in.overlay = rays_->texture(*raster_, controller_->camera(width, height));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
     compositor_->draw(in, width, height);
@@ -321,6 +326,7 @@ void Viewer::frame(float dt) {
     update_trace();
     collect_trace();
     update_title();  // "tracing" from the frame the camera moves, not from the next level
+    inspect(fb.x, fb.y);
     draw_views(fb.x, fb.y);
     if (save_requested_) {
         save_requested_ = false;
@@ -462,6 +468,8 @@ void Viewer::perform(Action action) {
 void Viewer::on_escape() {
     if (display_.help) {
         display_.help = false;
+    } else if (picked_ || pick_mode_) {
+        clear_picked();
     } else if (ImGui::IsPopupOpen(nullptr,
                                   ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) {
         ImGui::ClosePopupToLevel(0, true);
@@ -488,7 +496,12 @@ void Viewer::on_mouse_button(int button, int action) {
     if (ImGui::GetIO().WantCaptureMouse) return;
     int width = 1, height = 1;
     glfwGetWindowSize(window_.handle(), &width, &height);
-    if (button == GLFW_MOUSE_BUTTON_LEFT) {
+    GLFWwindow* w = window_.handle();
+    const bool ctrl = glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
+                      glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+    if (button == GLFW_MOUSE_BUTTON_LEFT && (ctrl || pick_mode_)) {
+        pick(drag_.cursor.x, drag_.cursor.y);
+    } else if (button == GLFW_MOUSE_BUTTON_LEFT) {
         const bool near_divider =
             display_.view == View::kSplit &&
             std::abs(drag_.cursor.x - static_cast<double>(display_.divider) * width) < 8.0;

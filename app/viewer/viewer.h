@@ -15,6 +15,7 @@
 
 #include "app/gl/compositor.h"
 #include "app/gl/raster_renderer.h"
+#include "app/gl/ray_overlay.h"
 #include "app/gl/texture.h"
 #include "app/gl/window.h"
 #include "app/viewer/camera_controller.h"
@@ -78,6 +79,24 @@ struct Display {
     float diff_threshold = 0.0f;  // > 0: the difference view is a mask of pixels over it
 };
 
+// A pixel whose rays are drawn in the scene (Ctrl+click, or the panel's "pick pixel").
+struct Picked {
+    rt::Camera camera;  // the view it was picked in, at the window's size
+    int x = 0, y = 0;   // from the bottom left, as rt::Image
+    rt::RayNode tree;
+};
+
+// The pixel under the cursor, set against both pipelines (the panel's inspector).
+struct Inspected {
+    rt::Camera camera;
+    int x = 0, y = 0;  // from the bottom left
+    rt::vec3 raster{0.0f}, traced{0.0f};
+    std::uint32_t raster_id = 0;        // item buffer: object + 1, 0 for none
+    std::uint32_t traced_object = ~0u;  // the tracer's first hit, ~0 for none
+    rt::Cause cause = rt::Cause::kNone;
+    rt::ExplainTerms terms;
+};
+
 // A mouse drag under way, and where the cursor is.
 struct Drag {
     bool orbit = false, pan = false, divider = false;
@@ -128,6 +147,13 @@ class Viewer {
     void draw_diff_controls();
     void draw_statistics();
     void draw_item_legend();
+    rt::TraceOptions trace_options() const;
+    void pick(double cursor_x, double cursor_y);
+    void trace_picked();
+    void clear_picked();
+    void draw_picked();
+    void inspect(int width, int height);
+    void draw_inspector();
     void draw_why_legend();
     void raster_frames(TraceRequest& request);
     void draw_raster_legend();
@@ -155,6 +181,12 @@ class Viewer {
     rt::gl::Texture traced_texture_;
     rt::Image traced_image_;  // what traced_texture_ holds
     rt::gl::Texture explain_texture_;
+    std::unique_ptr<rt::gl::RayOverlay> rays_;
+    std::optional<Picked> picked_;
+    bool pick_mode_ = false;  // the next left click picks
+    std::optional<Inspected> inspected_;
+    const rt::gl::Framebuffer* raster_fb_ = nullptr;  // holding raster_texture_
+    const rt::gl::Framebuffer* ids_fb_ = nullptr;     // holding ids_texture_
     std::shared_ptr<const Explanation> explanation_;  // what explain_texture_ holds
     // Trace in parts for the why view: on from when it is shown until the camera or a
     // setting changes with another view shown (a view change alone never retraces).

@@ -144,6 +144,8 @@ void Viewer::draw_panel() {
         display_.view == View::kDiff)
         draw_raster_legend();
 
+    draw_inspector();
+    draw_picked();
     draw_statistics();
     ImGui::Separator();
     for (const Action a : {Action::kResetCamera, Action::kSave, Action::kHelp}) {
