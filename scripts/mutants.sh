@@ -192,6 +192,26 @@ mutant glass-nesting-ignored core/medium.h \
     'Crossing c{ior(), 1.0f, *this};' 'Crossing c{1.0f, 1.0f, *this};' \
     rt_tests $(unit 'Refraction*:MediumStack.*')
 
+# The explain map: a term that no longer sums (shadow's sign), ids compared without the
+# item buffer's +1 (every pixel a geometry pixel), and the threshold ignored (no pixel
+# without a cause).
+mutant explain-shadow-sign core/explain.cpp \
+    't.shadow = traced.local - traced.unblocked;' 't.shadow = traced.unblocked - traced.local;' \
+    rt_tests $(unit 'Explain.*')
+mutant explain-ids-off-by-one core/explain.cpp \
+    'traced.object == PrimaryParts::kNoObject ? ItemBuffer::kEmpty : traced.object + 1;' \
+    'traced.object == PrimaryParts::kNoObject ? ItemBuffer::kEmpty : traced.object;' \
+    rt_tests $(unit 'Explain.*')
+mutant explain-no-threshold core/explain.cpp \
+    'if (!(displayed_difference > kNoneThreshold)) return Cause::kNone;' \
+    'if (displayed_difference < 0.0f) return Cause::kNone;' \
+    rt_tests $(unit 'Explain.*')
+mutant ray-segments-miss-length core/ray_tree.cpp \
+    's.b = n.origin + miss_length * unit;
+            s.miss = true;' 's.b = n.origin + unit;
+            s.miss = true;' \
+    rt_tests $(unit 'RayTree.*')
+
 # The POV-Ray oracle (tests/oracle) alone, without the unit tests: an independent tracer
 # must notice a planted bug in refraction, shadows, the camera and transforms.
 oracle=(ctest -R '^oracle[.]' --output-on-failure)

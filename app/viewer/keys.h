@@ -1,7 +1,7 @@
 #pragma once
 // The viewer's controls, once: the key handler looks keys up here, the help overlay
 // lists this table, the panel's buttons take their key hints from it. The views' keys
-// (1 to 5) come from kViews (views.h), in the same way.
+// (1 to 6) come from kViews (views.h), in the same way.
 
 #include <cstddef>
 #include <optional>
@@ -77,7 +77,7 @@ inline constexpr Control kControls[] = {
     {Action::kEscape,
      "close",
      "Esc",
-     "close the help or a drop-down; twice: quit",
+     "close the help or a drop-down, clear a picked pixel's rays; twice: quit",
      {{GLFW_KEY_ESCAPE}}},
     {Action::kQuit, "quit", "Ctrl+Q", "quit", {{GLFW_KEY_Q, GLFW_MOD_CONTROL}}},
 };

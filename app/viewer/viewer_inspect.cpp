@@ -67,8 +67,9 @@ void Viewer::trace_picked() {
         for (const rt::RayNode& c : n.children) self(self, c);
     };
     count(count, p.tree);
-    std::printf("picked: pixel %d,%d (from the top left): %zu rays, %d bounces, colour %s\n", p.x,
-                p.camera.rows - 1 - p.y, rays, rt::bounce_depth(p.tree),
+    const int bounces = rt::bounce_depth(p.tree);
+    std::printf("picked: pixel %d,%d (from the top left): %zu rays, %d bounce%s, colour %s\n", p.x,
+                p.camera.rows - 1 - p.y, rays, bounces, bounces == 1 ? "" : "s",
                 rgb8(p.tree.colour).c_str());
     std::fflush(stdout);
 }

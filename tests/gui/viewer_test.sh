@@ -192,9 +192,9 @@ check "a broken scene at run time is reported" test "$(log_count "radius: must b
 check "  ... and the viewer keeps running" kill -0 "$app_pid"
 # F5 reads the scene on screen again (a broken one asked for before is not it).
 shown=$(grep "^scene:" "$work/app.log" | tail -n1 | cut -d' ' -f2)
-scenes=$(log_count "^scene:")
+loaded=$(log_count "^scene:")
 after "^scene:" key F5
-check "F5 reads the scene shown again ($shown)" test "$(log_count "^scene:")" -gt "$scenes" -a \
+check "F5 reads the scene shown again ($shown)" test "$(log_count "^scene:")" -gt "$loaded" -a \
     "$(grep "^scene:" "$work/app.log" | tail -n1 | cut -d' ' -f2)" = "$shown"
 # The panel's path field opens any file: a click in it, the start of a path, Tab to
 # complete it, Enter to open.
@@ -289,5 +289,41 @@ check "no display: one line, exit 1 ($out)" test "$status" -eq 1 -a "$(echo "$ou
 check "  ... which points to rtrender" grep -q rtrender <<<"$out"
 out=$("$rtview" "$bad_scene" 2>&1); status=$?
 check "bad scene: one line, exit 1 ($out)" test "$status" -eq 1 -a "$(echo "$out" | wc -l)" -eq 1
+
+# A pixel's rays (whitted.json: its mirror ball is left of the middle). Ctrl+click on the
+# ball: the reflected ray, in its sky blue, starts at the clicked pixel (where the primary
+# ray hit the ball) and leaves it; it stays drawn while the camera orbits; Esc clears it.
+blue() {  # blue IMAGE [GEOMETRY]: how many pixels have the reflection's colour
+    convert "$1" ${2:+-crop "$2" +repage} -fuzz 0.5% -fill white -opaque "rgb(86,180,233)" \
+        -fill black +opaque white -format "%[fx:round(mean*w*h)]" info:
+}
+start_app "$rtview" "$scenes/whitted.json" --size ${W}x$H --view raster
+wait_for_window "^rtview - " && wait_for_log "^traced:" 1 || exit 1
+key h l
+settle
+grab rays_before
+after "^picked:" xdotool mousemove --window "$wid" 200 250 keydown ctrl click 1 keyup ctrl
+settle
+grab rays_picked
+picked=$(grep "^picked:" "$work/app.log" | tail -n1)
+check "Ctrl+click traces the pixel's rays ($picked)" grep -q "^picked: pixel 200,250 .* [1-9][0-9]* bounce" <<<"$picked"
+check "  ... the reflected ray is drawn ($(blue "$work/rays_picked.png") pixels, $(blue "$work/rays_before.png") before)" \
+    test "$(blue "$work/rays_picked.png")" -gt $(($(blue "$work/rays_before.png") + 300))
+check "  ... from the clicked pixel ($(blue "$work/rays_picked.png" 13x13+194+244) pixels within 6 of it)" \
+    test "$(blue "$work/rays_picked.png" 13x13+194+244)" -gt 3
+after "^traced:" drag 1 500 500 600 480
+settle
+grab rays_orbited
+check "  ... and still drawn after an orbit ($(blue "$work/rays_orbited.png") pixels)" \
+    test "$(blue "$work/rays_orbited.png")" -gt 1000
+check "  ... seen from elsewhere" at_least 2000 "$work/rays_orbited.png" "$work/rays_picked.png"
+key Escape
+settle
+grab rays_cleared
+check "Esc clears them ($(blue "$work/rays_cleared.png") pixels left)" \
+    test "$(blue "$work/rays_cleared.png")" -lt $(($(blue "$work/rays_orbited.png") / 10))
+kill "$app_pid" 2>/dev/null
+wait "$app_pid" 2>/dev/null
+app_pid=""
 
 finish

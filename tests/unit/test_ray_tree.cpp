@@ -220,3 +220,49 @@ TEST(RayTree, TheTreeSumsToThePixelOfTheRenderedImage) {
 
 }  // namespace
 }  // namespace rt
+
+namespace rt {
+namespace {
+
+std::size_t node_count(const RayNode& n) {
+    std::size_t count = 1;
+    for (const RayNode& c : n.children) count += node_count(c);
+    return count;
+}
+
+// What the viewer draws: one segment a ray, in the tree's order; a hit ends at its point,
+// a point light's feeler at the light, a miss after the fixed length.
+TEST(RayTree, SegmentsEndAtHitsLightsOrAFixedLength) {
+    LoadedScene loaded = load_scene(test::scene_path("whitted.json"));
+    loaded.scene.camera = loaded.scene.camera.resized(160, 120);
+    const Scene scene(std::move(loaded.scene));
+    const RayNode root =
+        trace_ray_tree(scene, scene.camera, {}, 100, 120 - 1 - 70);  // the glass ball
+    const std::vector<RaySegment> segments = ray_segments(root, scene.lights, 7.0f);
+    ASSERT_EQ(segments.size(), node_count(root));
+    std::size_t i = 0, misses = 0, feelers = 0;
+    const auto check = [&](const auto& self, const RayNode& n) -> void {
+        const RaySegment& s = segments[i++];
+        EXPECT_EQ(s.kind, n.kind);
+        EXPECT_EQ(s.a, n.origin);
+        if (n.kind == RayKind::kShadow) {
+            ++feelers;
+            EXPECT_EQ(s.blocked, n.blocked);
+            EXPECT_NEAR(glm::length(s.b - scene.lights[static_cast<std::size_t>(n.light)].position),
+                        0.0f, 1e-4f);
+        } else if (n.hit) {
+            EXPECT_EQ(s.b, n.hit->point);
+        } else {
+            ++misses;
+            EXPECT_TRUE(s.miss);
+            EXPECT_NEAR(glm::length(s.b - s.a), 7.0f, 1e-4f);
+        }
+        for (const RayNode& c : n.children) self(self, c);
+    };
+    check(check, root);
+    EXPECT_GT(feelers, 0u);
+    EXPECT_GT(misses, 0u);
+}
+
+}  // namespace
+}  // namespace rt
