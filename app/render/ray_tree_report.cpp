@@ -1,5 +1,7 @@
 #include "app/render/ray_tree_report.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -13,29 +15,42 @@ namespace {
 
 nlohmann::json vec(const vec3& v) { return {v.x, v.y, v.z}; }
 
-nlohmann::json hit_json(const std::optional<RayHitRecord>& h) {
-    if (!h) return nullptr;
-    return {{"object", h->name},       {"index", h->object},     {"t", h->t},
-            {"distance", h->distance}, {"point", vec(h->point)}, {"normal", vec(h->normal)}};
+// A point in the scene file's coordinates: the loader moved a far scene's centre to the
+// origin (LoadedScene::origin) so that float keeps its precision; it goes back here, in
+// double. Directions and normals need no such care.
+glm::dvec3 in_file(const vec3& p, const glm::dvec3& origin) { return origin + glm::dvec3(p); }
+nlohmann::json point(const vec3& p, const glm::dvec3& origin) {
+    const glm::dvec3 q = in_file(p, origin);
+    return {q.x, q.y, q.z};
 }
 
-nlohmann::json node_json(const RayNode& n) {
+nlohmann::json hit_json(const std::optional<RayHitRecord>& h, const glm::dvec3& origin) {
+    if (!h) return nullptr;
+    return {{"object", h->name},
+            {"index", h->object},
+            {"t", h->t},
+            {"distance", h->distance},
+            {"point", point(h->point, origin)},
+            {"normal", vec(h->normal)}};
+}
+
+nlohmann::json node_json(const RayNode& n, const glm::dvec3& origin) {
     nlohmann::json j = {{"kind", ray_kind_name(n.kind)},
-                        {"origin", vec(n.origin)},
+                        {"origin", point(n.origin, origin)},
                         {"direction", vec(n.direction)},
                         {"weight", n.weight}};
     if (n.kind == RayKind::kShadow) {
         j["light"] = n.light;
         j["blocked"] = n.blocked;
-        j["blocker"] = hit_json(n.blocker);
+        j["blocker"] = hit_json(n.blocker, origin);
     } else {
-        j["hit"] = hit_json(n.hit);
+        j["hit"] = hit_json(n.hit, origin);
         j["colour"] = vec(n.colour);
         j["local"] = vec(n.local);
         if (n.total_internal_reflection) j["total_internal_reflection"] = true;
     }
     j["children"] = nlohmann::json::array();
-    for (const RayNode& c : n.children) j["children"].push_back(node_json(c));
+    for (const RayNode& c : n.children) j["children"].push_back(node_json(c, origin));
     return j;
 }
 
@@ -45,12 +60,22 @@ std::string fmt(const vec3& v) {
     return buf;
 }
 
-void print_node(const Scene& scene, const RayNode& n, int indent) {
+// A point: as many digits as it takes to tell points 1e-4 apart, far out or not.
+std::string fmt_point(const vec3& p, const glm::dvec3& origin) {
+    const glm::dvec3 q = in_file(p, origin);
+    const double largest = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z), 1.0});
+    const int digits = 4 + static_cast<int>(std::ceil(std::log10(largest)));
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "(%.*g, %.*g, %.*g)", digits, q.x, digits, q.y, digits, q.z);
+    return buf;
+}
+
+void print_node(const Scene& scene, const RayNode& n, int indent, const glm::dvec3& origin) {
     std::printf("%*s%s", 2 * indent, "", ray_kind_name(n.kind));
     if (n.total_internal_reflection) std::printf(" (total internal reflection)");
     if (n.kind == RayKind::kShadow) {
         const Light& light = scene.lights[static_cast<std::size_t>(n.light)];
-        std::printf(" to light %d at %s: ", n.light, fmt(light.position).c_str());
+        std::printf(" to light %d at %s: ", n.light, fmt_point(light.position, origin).c_str());
         if (!n.blocked)
             std::printf("clear\n");
         else if (n.blocker)
@@ -59,15 +84,15 @@ void print_node(const Scene& scene, const RayNode& n, int indent) {
             std::printf("blocked\n");
         return;
     }
-    std::printf(" from %s dir %s, weight %.4g: ", fmt(n.origin).c_str(), fmt(n.direction).c_str(),
-                n.weight);
+    std::printf(" from %s dir %s, weight %.4g: ", fmt_point(n.origin, origin).c_str(),
+                fmt(n.direction).c_str(), n.weight);
     if (n.hit)
         std::printf("hit \"%s\" at t=%.4g, point %s, normal %s; local %s, returns %s\n",
-                    n.hit->name.c_str(), n.hit->t, fmt(n.hit->point).c_str(),
+                    n.hit->name.c_str(), n.hit->t, fmt_point(n.hit->point, origin).c_str(),
                     fmt(n.hit->normal).c_str(), fmt(n.local).c_str(), fmt(n.colour).c_str());
     else
         std::printf("miss, returns the background %s\n", fmt(n.colour).c_str());
-    for (const RayNode& c : n.children) print_node(scene, c, indent + 1);
+    for (const RayNode& c : n.children) print_node(scene, c, indent + 1, origin);
 }
 
 }  // namespace
@@ -81,15 +106,17 @@ RayNode trace_pixel_tree(const Scene& scene, const Camera& camera, const TraceOp
     return trace_ray_tree(scene, camera, options, x, camera.rows - 1 - y);
 }
 
-void print_ray_tree(const Scene& scene, const RayNode& root, int x, int y) {
+void print_ray_tree(const Scene& scene, const RayNode& root, int x, int y,
+                    const glm::dvec3& origin) {
     std::printf("pixel %d,%d (from the top left): colour %s, %d bounce%s\n", x, y,
                 fmt(root.colour).c_str(), bounce_depth(root), bounce_depth(root) == 1 ? "" : "s");
-    print_node(scene, root, 1);
+    print_node(scene, root, 1, origin);
 }
 
-void write_ray_tree_json(const RayNode& root, int x, int y, const std::string& path) {
+void write_ray_tree_json(const RayNode& root, int x, int y, const std::string& path,
+                         const glm::dvec3& origin) {
     const nlohmann::json j = {
-        {"pixel", {x, y}}, {"colour", vec(root.colour)}, {"ray", node_json(root)}};
+        {"pixel", {x, y}}, {"colour", vec(root.colour)}, {"ray", node_json(root, origin)}};
     std::ofstream out(path);
     out << j.dump(2) << '\n';
     if (!out) throw Error(path, "--ray-tree-json", "cannot write the file");

@@ -294,8 +294,9 @@ int Job::ray_tree() {
     if (!parsed)
         throw rt::Error("rtrender", "--ray-tree", "expected X,Y, got \"" + o_.ray_tree + "\"");
     const rt::RayNode root = trace_pixel_tree(*scene_, scene_->camera, o_.trace, x, y);
-    print_ray_tree(*scene_, root, x, y);
-    if (!o_.ray_tree_json.empty()) write_ray_tree_json(root, x, y, o_.ray_tree_json);
+    print_ray_tree(*scene_, root, x, y, loaded_.origin);
+    if (!o_.ray_tree_json.empty())
+        write_ray_tree_json(root, x, y, o_.ray_tree_json, loaded_.origin);
     return 0;
 }
 

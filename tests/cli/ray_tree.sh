@@ -45,5 +45,28 @@ for bad in 160,0 0,120 -1,5 abc 5; do
     grep -q "^rtrender: --ray-tree: " "$out/bad.txt" || fail "--ray-tree $bad: $(cat "$out/bad.txt")"
 done
 
+# A scene a million units out: the loader moves it to the origin for float's sake; the
+# tree's points are printed where the file put them.
+cat >"$out/far.json" <<'JSON'
+{ "camera": { "eye": [1000000, 1, 1000006], "u": [1, 0, 0], "v": [0, 1, 0], "n": [0, 0, 1], "H": 0.5, "N": 1 },
+  "resolution": [64, 48],
+  "lights": [ { "type": "point", "position": [999997, 5, 1000004] } ],
+  "materials": { "red": { "ka": 0.2, "kd": 0.8 } },
+  "objects": [ { "type": "sphere", "center": [999999.2, 0, 1000000], "radius": 1, "material": "red" } ] }
+JSON
+if "$rtrender" "$out/far.json" --ray-tree 27,26 --ray-tree-json "$out/far_tree.json" >"$out/far.txt" 2>&1; then
+    python3 - "$out/far_tree.json" <<'PY' || fail "far scene: points not in the file's coordinates: $(cat "$out/far.txt")"
+import json, math, sys
+r = json.load(open(sys.argv[1]))["ray"]
+assert all(abs(a - b) < 1e-3 for a, b in zip(r["origin"], [1000000, 1, 1000006])), r["origin"]
+p = r["hit"]["point"]
+d = math.dist(p, [999999.2, 0, 1000000])
+assert abs(d - 1.0) < 1e-3, (p, d)
+PY
+    grep -q "at (999997, 5, 1000004)" "$out/far.txt" || fail "far scene: the light's position: $(cat "$out/far.txt")"
+else
+    fail "far scene: $(cat "$out/far.txt")"
+fi
+
 echo "ray tree: $failures failures"
 [ "$failures" -eq 0 ]
