@@ -115,10 +115,7 @@ TEST(RayTree, MirrorReflectsAboutTheNormal) {
 TEST(RayTree, GlassBallRefractsInAndOut) {
     SceneDescription desc;
     desc.camera = Camera::look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40.0f, 41, 41);
-    Material glass = test::plain(vec3(0.0f), vec3(0.0f));
-    glass.transparency = 0.9f;
-    glass.ior = 1.5f;
-    desc.materials.push_back(glass);
+    desc.materials.push_back(test::clear_glass(0.9f));
     desc.materials.push_back(test::plain(vec3(1.0f), vec3(0.0f)));
     desc.objects.push_back(Object{"glass ball", Sphere{{0, 0, 0}, 1.0f}, 0, {}});
     desc.objects.push_back(Object{"wall", Plane{{0, 0, 1}, -4}, 1, {}});
@@ -142,10 +139,7 @@ TEST(RayTree, GlassBallRefractsInAndOut) {
 TEST(RayTree, TotalInternalReflectionIsAReflectionInThePlaceOfARefraction) {
     SceneDescription desc;
     desc.ambient = vec3(1.0f);
-    Material glass = test::plain(vec3(0.0f), vec3(0.0f));
-    glass.transparency = 0.9f;
-    glass.ior = 1.5f;
-    desc.materials.push_back(glass);
+    desc.materials.push_back(test::clear_glass(0.9f));
     desc.materials.push_back(test::plain({1.0f, 0.0f, 0.0f}, vec3(0.0f)));
     desc.meshes.push_back(test::box_mesh({-10, -2, -10}, {1, 0, 10}, test::Winding::kOutward));
     desc.objects.push_back(Object{"block", MeshRef{0, false}, 0, {}});

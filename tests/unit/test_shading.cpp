@@ -163,10 +163,7 @@ TEST(Refraction, RayThroughAGlassBallCentreComesOutStraight) {
     SceneDescription desc;
     desc.camera = test::axis_camera({0, 0, 5});
     desc.ambient = vec3(1.0f);
-    Material glass = test::plain(vec3(0.0f), vec3(0.0f));
-    glass.transparency = 0.8f;
-    glass.ior = 1.5f;
-    desc.materials.push_back(glass);
+    desc.materials.push_back(test::clear_glass(0.8f));
     desc.materials.push_back(test::plain({0.9f, 0.6f, 0.3f}, vec3(0.0f)));
     desc.objects.push_back(Object{"ball", Sphere{{0, 0, 0}, 1}, 0, {}});
     desc.objects.push_back(Object{"wall", Plane{{0, 0, 1}, -10}, 1, {}});
@@ -177,13 +174,7 @@ TEST(Refraction, RayThroughAGlassBallCentreComesOutStraight) {
     EXPECT_EQ(counts.refracted, 2u);
 }
 
-// Glass of index 1.5 that only transmits (no local shading, no reflection).
-Material clear_glass(float transparency) {
-    Material glass = test::plain(vec3(0.0f), vec3(0.0f));
-    glass.transparency = transparency;
-    glass.ior = 1.5f;
-    return glass;
-}
+using test::clear_glass;
 
 // The specular term away from the mirror direction, where r.v < 1 and the exponent
 // shows: a plane at y = 0 seen from straight above, lit from 45 degrees. r.v = cos 45,

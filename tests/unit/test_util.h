@@ -39,6 +39,14 @@ inline Material plain(vec3 ka, vec3 kd, vec3 ks = vec3(0.0f), float shininess = 
     return m;
 }
 
+// Glass with no colour of its own: only what it lets through (index 1.5 unless given).
+inline Material clear_glass(float transparency, float ior = 1.5f) {
+    Material glass = plain(vec3(0.0f), vec3(0.0f));
+    glass.transparency = transparency;
+    glass.ior = ior;
+    return glass;
+}
+
 // A camera at `eye` looking down -z with an odd resolution, so the centre pixel's ray
 // is exactly the optical axis.
 inline Camera axis_camera(vec3 eye, int size = 31) {
