@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -10,6 +11,35 @@
 #include "core/tile_runner.h"
 
 namespace rt {
+
+bool valid_spp(int n) {
+    if (n < 1 || n > 1024) return false;
+    const int m = static_cast<int>(std::lround(std::sqrt(static_cast<double>(n))));
+    return m * m == n;
+}
+
+namespace {
+// SplitMix64's finaliser: consecutive inputs give unrelated outputs.
+std::uint64_t mix(std::uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+}  // namespace
+
+Ray pixel_sample(const Camera& camera, int x, int y, int s, int spp) {
+    if (spp <= 1) return camera.ray(x, y);
+    const int m = static_cast<int>(std::lround(std::sqrt(static_cast<double>(spp))));
+    const std::uint64_t h = mix((static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 40) ^
+                                (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 16) ^
+                                static_cast<std::uint64_t>(s));
+    constexpr float k24 = 1.0f / 16777216.0f;  // 24 random bits to [0, 1)
+    const float jx = static_cast<float>(h >> 40) * k24,
+                jy = static_cast<float>((h >> 16) & 0xffffff) * k24;
+    const float cell = 1.0f / static_cast<float>(m);
+    return camera.ray_at(static_cast<float>(x) + (static_cast<float>(s % m) + jx) * cell,
+                         static_cast<float>(y) + (static_cast<float>(s / m) + jy) * cell);
+}
 
 int resolve_thread_count(int requested) {
     if (requested > 0) return requested;
@@ -53,6 +83,10 @@ Image render(const Scene& scene, const Camera& camera, const RenderOptions& opti
     const int width = camera.cols, height = camera.rows;
     if (item_buffer && (item_buffer->width != width || item_buffer->height != height))
         throw std::invalid_argument("render: the item buffer's size differs from the camera's");
+    if (!valid_spp(options.spp))
+        throw std::invalid_argument("render: samples per pixel must be a square number");
+    const int spp = options.spp;
+    if (spp > 1) item_buffer = nullptr;  // it knows the pixel centres only
     const int threads = resolve_thread_count(options.threads);
     Image image(width, height);
     std::vector<Hit> hits(image.pixels.size());
@@ -60,50 +94,59 @@ Image render(const Scene& scene, const Camera& camera, const RenderOptions& opti
     RayCounts counts;
     const int tile_size = std::max(1, options.tile_size);
     const int tiles = tile_count(width, height, tile_size);
-    TileRunner runner(width, height, tile_size, threads, progress, 2 * tiles);
-
-    const Stopwatch watch;
-    bool complete = runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
-        std::uint64_t fell = 0;
-        for (int y = t.y0; y < t.y1; ++y) {
-            for (int x = t.x0; x < t.x1; ++x) {
-                bool fell_back = false;
-                hits[static_cast<std::size_t>(y) * width + x] =
-                    primary_hit(scene, camera.ray(x, y), item_buffer, x, y, fell_back);
-                fell += fell_back;
-                ++local.primary;
-            }
-        }
-        fallbacks.fetch_add(fell, std::memory_order_relaxed);
-    });
-    const double primary_seconds = watch.seconds();
-
+    TileRunner runner(width, height, tile_size, threads, progress, 2 * tiles * spp);
     const Tracer tracer(scene, options.trace);
-    const Stopwatch shade_watch;
-    complete = complete && runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
-        // Each worker its own copy (a few words): the shared one sat on the calling
-        // thread's stack beside what that thread writes for every ray, and reading it made
-        // the two threads wait on each other's cache line (whitted at 1280 x 720 on two
-        // threads, medians of 7 to 9 runs: 0.164 s with the shared tracer, 0.134 s with copies).
-        const Tracer mine = tracer;
-        for (int y = t.y0; y < t.y1; ++y) {
-            for (int x = t.x0; x < t.x1; ++x) {
-                vec3 c = mine.shade_hit(camera.ray(x, y),
-                                        hits[static_cast<std::size_t>(y) * width + x], local);
-                if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
-                    nonfinite.fetch_add(1, std::memory_order_relaxed);
-                    c = vec3(0.0f);
+    const Stopwatch watch;
+    double primary_seconds = 0.0, secondary_seconds = 0.0;
+    bool complete = true;
+    // Each sample in two passes over the image: its first hits, then their shading, added up.
+    for (int s = 0; s < spp && complete; ++s) {
+        const Stopwatch primary_watch;
+        complete = runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
+            std::uint64_t fell = 0;
+            for (int y = t.y0; y < t.y1; ++y) {
+                for (int x = t.x0; x < t.x1; ++x) {
+                    bool fell_back = false;
+                    hits[static_cast<std::size_t>(y) * width + x] = primary_hit(
+                        scene, pixel_sample(camera, x, y, s, spp), item_buffer, x, y, fell_back);
+                    fell += fell_back;
+                    ++local.primary;
                 }
-                image.at(x, y) = c;
             }
-        }
-    });
+            fallbacks.fetch_add(fell, std::memory_order_relaxed);
+        });
+        primary_seconds += primary_watch.seconds();
+
+        const Stopwatch shade_watch;
+        complete = complete && runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
+            // Each worker its own copy (a few words): the shared one sat on the calling
+            // thread's stack beside what that thread writes for every ray, and reading it made
+            // the two threads wait on each other's cache line (whitted at 1280 x 720 on two
+            // threads, medians of 7 to 9 runs: 0.164 s with the shared tracer, 0.134 s with
+            // copies).
+            const Tracer mine = tracer;
+            for (int y = t.y0; y < t.y1; ++y) {
+                for (int x = t.x0; x < t.x1; ++x) {
+                    vec3 c = mine.shade_hit(pixel_sample(camera, x, y, s, spp),
+                                            hits[static_cast<std::size_t>(y) * width + x], local);
+                    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
+                        nonfinite.fetch_add(1, std::memory_order_relaxed);
+                        c = vec3(0.0f);
+                    }
+                    image.at(x, y) += c;
+                }
+            }
+        });
+        secondary_seconds += shade_watch.seconds();
+    }
+    if (spp > 1)
+        for (vec3& p : image.pixels) p *= 1.0f / static_cast<float>(spp);
 
     if (stats) {
         stats->rays = counts;
         stats->threads = std::min(threads, tiles);
         stats->primary_seconds = primary_seconds;
-        stats->secondary_seconds = shade_watch.seconds();
+        stats->secondary_seconds = secondary_seconds;
         stats->seconds = watch.seconds();
         stats->nonfinite_pixels = nonfinite.load();
         stats->item_buffer_fallbacks = fallbacks.load();

@@ -17,7 +17,18 @@ struct RenderOptions {
     TraceOptions trace;
     int threads = 0;  // 0: every hardware thread
     int tile_size = 16;
+    // Samples per pixel, a square number (1, 4, 9, 16, ...): stratified and jittered,
+    // averaged (a box filter). 1 is the pixel centre: the image of the tutorial.
+    int spp = 1;
 };
+
+// Whether n samples per pixel can be laid out as a square grid of strata.
+bool valid_spp(int n);
+// Sample `s` of `spp` in pixel (x, y) (y = 0 the bottom row): the centre for one sample;
+// otherwise stratum (s mod m, s div m) of the m x m grid (m = sqrt spp), at a point within
+// it drawn from a hash of (x, y, s), so the image is the same every run, on any number of
+// threads.
+Ray pixel_sample(const Camera& camera, int x, int y, int s, int spp);
 
 struct RenderStats {
     RayCounts rays;
@@ -38,11 +49,11 @@ struct RenderStats {
 // a worker thread but never from two at once.
 using ProgressFn = std::function<void(int done, int total)>;
 
-// Renders scene.camera's view (or `camera`'s). With an item buffer (of the camera's size) the
-// primary hits come from it: only the named object or triangle is tested, and pixels on an object's
-// border, or where that test misses, fall back to a full traversal. When `stop` is requested the
-// workers finish their current tile and return; the image is then partly black and stats.cancelled
-// is set.
+// Renders scene.camera's view (or `camera`'s). With an item buffer (of the camera's size), and
+// one sample per pixel (it knows the pixel centres only), the primary hits come from it: only the
+// named object or triangle is tested, and pixels on an object's border, or where that test misses,
+// fall back to a full traversal. When `stop` is requested the workers finish their current tile and
+// return; the image is then partly black and stats.cancelled is set.
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr,
              const ProgressFn& progress = {}, std::stop_token stop = {},
              const ItemBuffer* item_buffer = nullptr);

@@ -2,7 +2,7 @@
 //   rtrender SCENE [-o OUT.png|OUT.exr] [--mode trace|raster|both|itembuffer|explain] [--gl
 //   egl|osmesa]
 //            [--item-buffer on|off] [--accel bvh|bvh2|grid|brute] [--size WxH] [--threads N]
-//            [--max-depth N] [--no-shadows]
+//            [--max-depth N] [--spp N] [--no-shadows]
 //            [--no-reflections] [--no-refractions] [--stats FILE.json] [--quiet] [--up AXIS]
 
 #include <iostream>
@@ -12,6 +12,7 @@
 #include "app/common/cli_names.h"
 #include "app/render/options.h"
 #include "core/error.h"
+#include "core/renderer.h"
 #include "core/scene_loader.h"
 
 namespace rt::renderer {
@@ -45,6 +46,19 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     app.add_option("--min-weight", o.trace.min_weight,
                    "Cast no reflected or refracted ray that adds less than this to the pixel")
         ->check(CLI::Range(0.0f, 1.0f));
+    app.add_option("--spp", o.spp,
+                   "Traced samples per pixel: 1 (the pixel centre, default), 4, 16, 64, ... "
+                   "(a square number; stratified, jittered, box-filtered)")
+        ->check(CLI::Validator(
+            [](const std::string& s) {
+                try {
+                    return rt::valid_spp(std::stoi(s)) ? std::string()
+                                                       : "expected a square number from 1 to 1024";
+                } catch (const std::exception&) {
+                    return std::string("expected a square number from 1 to 1024");
+                }
+            },
+            "SQUARE"));
     app.add_flag("--no-shadows", no_shadows, "Trace no shadow feelers");
     app.add_flag("--no-reflections", no_reflections, "Trace no reflected rays");
     app.add_flag("--no-refractions", no_refractions, "Trace no refracted rays");
@@ -65,6 +79,12 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
         return false;
     }
     o.item_buffer = item_buffer == "on";
+    if (o.item_buffer && o.spp > 1) {
+        std::cerr << "rtrender: command line: --item-buffer on needs --spp 1 (the item buffer "
+                     "holds the pixel centres' first hits only)\n";
+        exit_code = 1;
+        return false;
+    }
     o.trace.shadows = !no_shadows;
     o.trace.reflections = !no_reflections;
     o.trace.refractions = !no_refractions;

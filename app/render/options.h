@@ -28,6 +28,7 @@ struct Options {
     std::string up = "y";  // a bare mesh's up axis (rt::LoadOptions)
     bool item_buffer = false;
     int threads = 0;
+    int spp = 1;  // traced samples per pixel (a square number)
     rt::TraceOptions trace;
     bool quiet = false;
     std::string ray_tree;       // "X,Y": print that pixel's rays instead of rendering

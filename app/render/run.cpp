@@ -91,6 +91,7 @@ rt::Image Job::render_traced(const rt::ItemBuffer* item_buffer, rt::RenderStats&
     rt::RenderOptions options;
     options.threads = o_.threads;
     options.trace = o_.trace;
+    options.spp = o_.spp;
     ProgressBar bar(!o_.quiet && isatty(STDERR_FILENO));
     rt::Image image = rt::render(
         *scene_, options, &stats, [&](int done, int total) { bar.update(done, total); }, {},
@@ -121,6 +122,7 @@ rt::Image Job::trace() {
     stats_["primary_seconds"] = stats.primary_seconds;
     stats_["secondary_seconds"] = stats.secondary_seconds;
     stats_["threads"] = stats.threads;
+    stats_["spp"] = o_.spp;
     stats_["rays"] = {{"primary", stats.rays.primary},
                       {"shadow", stats.rays.shadow},
                       {"reflected", stats.rays.reflected},

@@ -185,6 +185,7 @@ class Viewer {
     std::optional<Picked> picked_;
     bool pick_mode_ = false;  // the next left click picks
     std::optional<Inspected> inspected_;
+    std::uint64_t inspect_camera_version_ = 0;  // the camera of the last frame inspect() saw
     const rt::gl::Framebuffer* raster_fb_ = nullptr;  // holding raster_texture_
     const rt::gl::Framebuffer* ids_fb_ = nullptr;     // holding ids_texture_
     std::shared_ptr<const Explanation> explanation_;  // what explain_texture_ holds

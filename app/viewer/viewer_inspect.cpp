@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "app/viewer/panel_widgets.h"
 #include "app/viewer/viewer.h"
@@ -122,9 +123,12 @@ void Viewer::draw_picked() {
 
 // The pixel under the cursor, when it or the camera changed and no drag is under way: one
 // pixel read back from each raster pass (drawn again only for a new camera) and one ray
-// traced in parts; nothing while the camera moves.
+// traced in parts; nothing while the camera moves (a drag, or flying with the keys: the
+// camera changed since the last frame).
 void Viewer::inspect(int width, int height) {
-    if (!display_.panel || drag_.orbit || drag_.pan || drag_.divider) return;
+    const std::uint64_t version = controller_->version();
+    const bool moving = version != std::exchange(inspect_camera_version_, version);
+    if (!display_.panel || moving || drag_.orbit || drag_.pan || drag_.divider) return;
     const std::optional<glm::ivec2> p =
         cursor_pixel(window_.handle(), drag_.cursor.x, drag_.cursor.y, width, height);
     if (!p || ImGui::GetIO().WantCaptureMouse) return;
