@@ -1,5 +1,6 @@
 // rtview: the interactive viewer.
-//   rtview [SCENE] [--size WxH] [--view raster|trace|split|diff|itembuffer] [--save-dir DIR]
+//   rtview [SCENE] [--size WxH] [--view raster|trace|split|diff|itembuffer|why] [--spp N]
+//          [--save-dir DIR]
 //          [--accel bvh|bvh2|grid|brute] [--benchmark]
 
 #include <charconv>
@@ -26,6 +27,10 @@ int main(int argc, char** argv) {
     app.add_option("--view", options.view, "First view")
         ->transform(rt::app::cli_names(rt::viewer::kViews));
     app.add_option("--save-dir", save_dir, "Where F12 saves images (default: here)");
+    app.add_option("--spp", options.spp,
+                   "Samples per pixel the traced view refines to once at full resolution: "
+                   "1 (no anti-aliasing), 4, 16 (default) or 64")
+        ->check(CLI::IsMember({1, 4, 16, 64}));
     app.add_option("--up", options.up, "A bare mesh's up axis: y (default), z, x, -y, -z or -x")
         ->check(CLI::IsMember(
             std::vector<std::string>(std::begin(rt::kUpAxes), std::end(rt::kUpAxes))));

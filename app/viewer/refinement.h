@@ -22,6 +22,7 @@ struct TraceKey {
     bool item_buffer = false;
     int threads = 0;
     bool explain = false;  // traced in parts against the raster: the why view
+    int max_spp = 1;       // anti-aliasing: samples per pixel refined to after full resolution
 
     bool operator==(const TraceKey&) const = default;
 };

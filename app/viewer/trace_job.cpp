@@ -99,15 +99,35 @@ void TraceJob::run(const TraceRequest& request, std::stop_token cancel) {
             result.without_item_buffer = plain_stats;
             result.item_buffer_disagreements = rt::item_buffer_disagreements(result.image, plain);
         }
-        {
-            std::lock_guard lock(mutex_);
-            // A request submitted while this level rendered supersedes it (submit stops the
-            // token under this lock, so the check cannot race).
-            if (cancel.stop_requested()) return;
-            result_ = std::move(result);
-        }
-        if (on_publish_) on_publish_();
+        if (!publish(std::move(result), cancel)) return;
     }
+    if (request.levels.empty() || request.levels.back() != 1) return;
+    for (int spp : request.spp_passes) {
+        TraceResult result;
+        result.id = request.id;
+        result.spp = spp;
+        rt::RenderOptions options = request.options;
+        options.spp = spp;
+        progress_ = 0.0f;
+        const auto on_progress = [&](int done, int total) {
+            progress_ = static_cast<float>(done) / static_cast<float>(total);
+        };
+        result.image =
+            rt::render(*request.scene, full, options, &result.stats, on_progress, cancel);
+        if (result.stats.cancelled || !publish(std::move(result), cancel)) return;
+    }
+}
+
+bool TraceJob::publish(TraceResult result, std::stop_token cancel) {
+    {
+        std::lock_guard lock(mutex_);
+        // A request submitted while this level rendered supersedes it (submit stops the
+        // token under this lock, so the check cannot race).
+        if (cancel.stop_requested()) return false;
+        result_ = std::move(result);
+    }
+    if (on_publish_) on_publish_();
+    return true;
 }
 
 bool TraceJob::explain_level(const TraceRequest& request, const rt::Camera& camera,

@@ -38,6 +38,9 @@ struct TraceRequest {
     // For the why view: one raster frame per level, in the levels' order. Each level is
     // then traced in parts (rt::explain), giving the traced image and its explanation.
     std::vector<std::shared_ptr<const RasterFrame>> explain;
+    // After full resolution: the same frame again with these many samples per pixel
+    // (anti-aliased), each published as it is done.
+    std::vector<int> spp_passes;
     std::uint64_t id = 0;
 };
 
@@ -50,6 +53,7 @@ struct Explanation {
 struct TraceResult {
     std::uint64_t id = 0;
     int level = 1;
+    int spp = 1;  // samples per pixel
     rt::Image image;
     rt::RenderStats stats;
     std::optional<rt::RenderStats> without_item_buffer;  // with an item buffer only
@@ -76,6 +80,7 @@ class TraceJob {
   private:
     void loop(std::stop_token stop);
     void run(const TraceRequest& request, std::stop_token cancel);
+    bool publish(TraceResult result, std::stop_token cancel);  // false if superseded
     // One level traced in parts against its raster frame; false if cancelled.
     bool explain_level(const TraceRequest& request, const rt::Camera& camera,
                        const RasterFrame& raster, std::stop_token cancel, TraceResult& result);

@@ -86,6 +86,7 @@ Viewer::Viewer(const ViewerOptions& options)
     window_.init_imgui();
     compositor_ = std::make_unique<rt::gl::Compositor>();
     rays_ = std::make_unique<rt::gl::RayOverlay>();
+    settings_.max_spp = options.spp;
     std::printf("OpenGL: %s\n", window_.description().c_str());
     install(std::move(first_scene_), options.scene);
 }
@@ -150,6 +151,7 @@ TraceKey Viewer::trace_key() const {
     key.item_buffer = settings_.item_buffer;
     key.threads = settings_.threads;
     key.explain = explain_;
+    key.max_spp = settings_.max_spp;
     return key;
 }
 
@@ -202,6 +204,9 @@ void Viewer::update_trace() {
         ids_camera_.reset();  // the pass drew over the item-buffer view's texture
     }
     if (key.explain) raster_frames(request);
+    for (int spp = 4; !key.explain && request.levels.back() == 1 && spp <= settings_.max_spp;
+         spp *= 4)
+        request.spp_passes.push_back(spp);
     request.id = ++request_id_;
     shown_.submitted(request_id_, key);
     tracer_.submit(std::move(request));
@@ -231,6 +236,14 @@ void Viewer::collect_trace() {
         explain_texture_.upload(explanation_->colours);
     }
     shown_.arrived(result->id, result->level);
+    shown_spp_ = result->spp;
+    if (result->spp > 1) {
+        std::printf("antialiased: %dx%d at %d samples per pixel in %.3f s\n", traced_image_.width,
+                    traced_image_.height, result->spp, result->stats.seconds);
+        std::fflush(stdout);
+        update_title();
+        return;
+    }
     stats_.shown = result->stats;
     stats_.trace_ms.add(static_cast<float>(1e3 * result->stats.seconds));
     if (result->level == 1) {

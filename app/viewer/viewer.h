@@ -40,6 +40,7 @@ struct ViewerOptions {
     std::filesystem::path save_dir = ".";
     rt::AccelKind accel = rt::AccelKind::kBvh;
     std::string up = "y";  // a bare mesh's up axis (rt::LoadOptions); the panel can change it
+    int spp = 16;          // samples per pixel the traced view refines to (1: no anti-aliasing)
 };
 
 struct Settings {
@@ -48,6 +49,7 @@ struct Settings {
     int max_depth = 5;
     float resolution_scale = 1.0f;  // of the window, for the traced image
     int threads = 0;                // 0: all cores
+    int max_spp = 16;               // anti-aliasing after full resolution: 1, 4, 16 or 64
     float diff_scale = 0.5f;
 
     bool operator==(const Settings&) const = default;
@@ -185,7 +187,7 @@ class Viewer {
     std::optional<Picked> picked_;
     bool pick_mode_ = false;  // the next left click picks
     std::optional<Inspected> inspected_;
-    std::uint64_t inspect_camera_version_ = 0;  // the camera of the last frame inspect() saw
+    std::uint64_t inspect_camera_version_ = 0;        // the camera of the last frame inspect() saw
     const rt::gl::Framebuffer* raster_fb_ = nullptr;  // holding raster_texture_
     const rt::gl::Framebuffer* ids_fb_ = nullptr;     // holding ids_texture_
     std::shared_ptr<const Explanation> explanation_;  // what explain_texture_ holds
@@ -198,7 +200,8 @@ class Viewer {
     std::optional<TraceKey> logged_settings_;
     rt::Stopwatch clock_;  // the viewer's time, for the schedule
     std::uint64_t request_id_ = 0;
-    ShownTrace shown_;  // what the traced image on screen belongs to
+    ShownTrace shown_;   // what the traced image on screen belongs to
+    int shown_spp_ = 1;  // its samples per pixel
     FrameStats stats_;
     std::optional<rt::Camera> raster_camera_, ids_camera_;  // what the textures hold
     GLuint raster_texture_ = 0, ids_texture_ = 0;

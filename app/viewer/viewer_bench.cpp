@@ -82,8 +82,7 @@ int Viewer::benchmark(const std::vector<std::string>& scenes) {
         std::printf("%-22s %9.1f %7zu %9.1f %9.1f %9.1f %9.1f %14.0f%s\n",
                     std::filesystem::path(path).filename().string().c_str(), median(tracing),
                     tracing.size(), median(rest), median(hover), median(orbit),
-                    median(orbit_raster), to_full,
-                    ok ? "" : "  (timed out)");
+                    median(orbit_raster), to_full, ok ? "" : "  (timed out)");
         std::fflush(stdout);
         if (!ok) status = 1;
     }

@@ -47,6 +47,10 @@ void diff_scale_bar(ImDrawList* draw, float w, float h, rt::gl::DiffMode mode, f
 std::string Viewer::traced_label() const {
     std::string text = "ray traced";
     if (shown_.level() > 1) text += ", 1/" + std::to_string(shown_.level()) + " resolution";
+    if (shown_.level() == 1 && shown_spp_ > 1)
+        text += ", " + std::to_string(shown_spp_) + " samples per pixel";
+    if (shown_.level() == 1 && shown_spp_ < settings_.max_spp && !traced_stale() && !explain_)
+        text += " (anti-aliasing...)";
     if (traced_stale()) text += " - tracing... (this image is from before the last change)";
     return text;
 }

@@ -122,6 +122,14 @@ void Viewer::draw_panel() {
     int threads = settings_.threads > 0 ? settings_.threads : cores;
     if (ImGui::SliderInt("threads", &threads, 1, std::max(cores, 16), "%d", kClamp))
         settings_.threads = threads;
+    // After full resolution the traced view refines to this many samples per pixel.
+    static constexpr int kSpp[] = {1, 4, 16, 64};
+    const char* spp_names[] = {"off (1 sample per pixel)", "4 samples per pixel",
+                               "16 samples per pixel", "64 samples per pixel"};
+    int spp_index = static_cast<int>(
+        std::find(std::begin(kSpp), std::end(kSpp), settings_.max_spp) - std::begin(kSpp));
+    if (ImGui::Combo("anti-aliasing", &spp_index, spp_names, 4))
+        settings_.max_spp = kSpp[std::clamp(spp_index, 0, 3)];
 
     section("view");
     for (std::size_t i = 0; i < kViewCount; ++i) {

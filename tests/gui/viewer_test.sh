@@ -25,7 +25,9 @@ cp "$bad_scene" "$work/assets/scenes/zz_broken.json"
 export RTVIEW_ASSET_DIR=$work/assets
 
 start_xvfb
-start_app "$rtview" "$scene" --size ${W}x$H --view raster --save-dir "$work/saves"
+# --spp 1: the checks below compare with rtrender's one-sample images (anti-aliasing has
+# its own check at the end).
+start_app "$rtview" "$scene" --size ${W}x$H --view raster --save-dir "$work/saves" --spp 1
 wait_for_window "^rtview - " || exit 1
 wait_for_log "^traced:" 1 || exit 1
 
@@ -290,6 +292,20 @@ check "  ... which points to rtrender" grep -q rtrender <<<"$out"
 out=$("$rtview" "$bad_scene" 2>&1); status=$?
 check "bad scene: one line, exit 1 ($out)" test "$status" -eq 1 -a "$(echo "$out" | wc -l)" -eq 1
 
+# Anti-aliasing: once at full resolution the traced view refines to 4 samples per pixel,
+# and then it is rtrender --spp 4's image.
+"$rtrender" "$scene" --size ${W}x$H -q --spp 4 -o "$work/ref_spp4.png"
+start_app "$rtview" "$scene" --size ${W}x$H --view trace --spp 4
+wait_for_window "^rtview - " && wait_for_log "^antialiased: ${W}x$H at 4 samples" 1 || exit 1
+key h l
+settle
+grab spp4
+check "anti-aliased traced view is rtrender --spp 4's image" at_most 100 "$work/spp4.png" "$work/ref_spp4.png"
+check "  ... which differs from one sample per pixel" at_least 500 "$work/ref_spp4.png" "$work/ref.trace.png"
+kill "$app_pid" 2>/dev/null
+wait "$app_pid" 2>/dev/null
+app_pid=""
+
 # A pixel's rays (whitted.json: its mirror ball is left of the middle). Ctrl+click on the
 # ball: the reflected ray, in its sky blue, starts at the clicked pixel (where the primary
 # ray hit the ball) and leaves it; it stays drawn while the camera orbits; Esc clears it.
@@ -297,7 +313,7 @@ blue() {  # blue IMAGE [GEOMETRY]: how many pixels have the reflection's colour
     convert "$1" ${2:+-crop "$2" +repage} -fuzz 0.5% -fill white -opaque "rgb(86,180,233)" \
         -fill black +opaque white -format "%[fx:round(mean*w*h)]" info:
 }
-start_app "$rtview" "$scenes/whitted.json" --size ${W}x$H --view raster
+start_app "$rtview" "$scenes/whitted.json" --size ${W}x$H --view raster --spp 1
 wait_for_window "^rtview - " && wait_for_log "^traced:" 1 || exit 1
 key h l
 settle
