@@ -1,5 +1,6 @@
 #include "app/gl/framebuffer.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -8,8 +9,21 @@
 
 namespace rt::gl {
 
-Framebuffer::Framebuffer(Kind kind, int width, int height)
-    : kind_(kind), width_(width), height_(height), fbo_(make_framebuffer()) {
+namespace {
+void require_complete(const char* what) {
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error(std::string(what) + " incomplete (status " +
+                                 std::to_string(status) + ")");
+}
+}  // namespace
+
+Framebuffer::Framebuffer(Kind kind, int width, int height, int samples)
+    : kind_(kind),
+      width_(width),
+      height_(height),
+      samples_(kind == Kind::kColour ? std::max(1, samples) : 1),
+      fbo_(make_framebuffer()) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
     const int attachments = kind == Kind::kColour ? 1 : 2;
     for (int i = 0; i < attachments; ++i) {
@@ -30,14 +44,43 @@ Framebuffer::Framebuffer(Kind kind, int width, int height)
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
     const GLenum draw[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(attachments, draw);
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("framebuffer incomplete (status " + std::to_string(status) + ")");
+    require_complete("framebuffer");
+    if (samples_ > 1) {
+        GLint most = 1;
+        glGetIntegerv(GL_MAX_SAMPLES, &most);
+        if (samples_ > most)
+            throw std::runtime_error(std::to_string(samples_) + "x MSAA: this GL offers at most " +
+                                     std::to_string(most) + " samples");
+        ms_fbo_ = make_framebuffer();
+        glBindFramebuffer(GL_FRAMEBUFFER, ms_fbo_.get());
+        ms_colour_ = make_renderbuffer();
+        glBindRenderbuffer(GL_RENDERBUFFER, ms_colour_.get());
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA32F, width, height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  ms_colour_.get());
+        ms_depth_ = make_renderbuffer();
+        glBindRenderbuffer(GL_RENDERBUFFER, ms_depth_.get());
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT32F, width,
+                                         height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  ms_depth_.get());
+        require_complete("multisampled framebuffer");
+    }
     check("Framebuffer");
 }
 
-void Framebuffer::bind() const {
+void Framebuffer::resolve() const {
+    if (samples_ <= 1) return;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo_.get());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_.get());
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
+    check("Framebuffer::resolve");
+}
+
+void Framebuffer::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? ms_fbo_.get() : fbo_.get());
     glViewport(0, 0, width_, height_);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);

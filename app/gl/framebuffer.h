@@ -16,10 +16,14 @@ class Framebuffer {
         kItemBuffer  // two R32UI attachments: object id + 1, triangle index
     };
 
-    Framebuffer(Kind kind, int width, int height);
+    // `samples` > 1 (colour only): drawn multisampled, into renderbuffers; resolve()
+    // averages the samples into the texture that texture() and the reads see.
+    Framebuffer(Kind kind, int width, int height, int samples = 1);
 
     int width() const { return width_; }
     int height() const { return height_; }
+    int samples() const { return samples_; }
+    void resolve() const;  // after drawing; nothing to do with one sample
     // The colour attachments are textures, so a later pass can sample them.
     GLuint texture(int attachment = 0) const { return colour_[attachment].get(); }
     void bind() const;  // as the draw target, with the viewport set and cleared
@@ -32,10 +36,12 @@ class Framebuffer {
 
   private:
     Kind kind_;
-    int width_, height_;
+    int width_, height_, samples_;
     FramebufferHandle fbo_;
     TextureHandle colour_[2];
     RenderbufferHandle depth_;
+    FramebufferHandle ms_fbo_;  // samples > 1: what is drawn into
+    RenderbufferHandle ms_colour_, ms_depth_;
 };
 
 }  // namespace rt::gl

@@ -114,19 +114,21 @@ void RasterRenderer::draw_ids(const Camera& camera) {
 }
 
 Framebuffer& RasterRenderer::target(std::optional<Framebuffer>& fb, Framebuffer::Kind kind,
-                                    const Camera& camera) {
-    if (!fb || fb->width() != camera.cols || fb->height() != camera.rows)
-        fb.emplace(kind, camera.cols, camera.rows);
+                                    const Camera& camera, int samples) {
+    if (!fb || fb->width() != camera.cols || fb->height() != camera.rows ||
+        fb->samples() != samples)
+        fb.emplace(kind, camera.cols, camera.rows, samples);
     return *fb;
 }
 
 const Framebuffer& RasterRenderer::render_to_texture(const Camera& camera) {
-    Framebuffer& fb = target(colour_target_, Framebuffer::Kind::kColour, camera);
+    Framebuffer& fb = target(colour_target_, Framebuffer::Kind::kColour, camera, msaa_);
     fb.bind();
     const glm::vec3 bg = scene_.background;
     glClearColor(bg.x, bg.y, bg.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     draw(camera);
+    fb.resolve();
     return fb;
 }
 

@@ -32,6 +32,11 @@ class RasterRenderer {
     const Framebuffer& render_to_texture(const Camera& camera);
     const Framebuffer& render_item_buffer_to_texture(const Camera& camera);
 
+    // Multisample anti-aliasing of the colour pass (1, 2, 4 or 8 samples; 1: none). The
+    // item buffer stays one sample a pixel: an object id cannot be averaged.
+    void set_msaa(int samples) { msaa_ = samples; }
+    int msaa() const { return msaa_; }
+
     // The two passes into whatever framebuffer is bound.
     void draw(const Camera& camera);
     void draw_ids(const Camera& camera);
@@ -44,7 +49,7 @@ class RasterRenderer {
     void set_material(const Material& m, const DrawItem& item);
     void set_object(Program& program, const DrawItem& item, const Camera& camera);
     Framebuffer& target(std::optional<Framebuffer>& fb, Framebuffer::Kind kind,
-                        const Camera& camera);
+                        const Camera& camera, int samples = 1);
 
     const Scene& scene_;
     GpuScene gpu_;
@@ -53,6 +58,7 @@ class RasterRenderer {
     Program wire_;
     std::optional<Framebuffer> colour_target_;
     std::optional<Framebuffer> id_target_;
+    int msaa_ = 1;
 };
 
 }  // namespace rt::gl

@@ -2,7 +2,7 @@
 //   rtrender SCENE [-o OUT.png|OUT.exr] [--mode trace|raster|both|itembuffer|explain] [--gl
 //   egl|osmesa]
 //            [--item-buffer on|off] [--accel bvh|bvh2|grid|brute] [--size WxH] [--threads N]
-//            [--max-depth N] [--spp N] [--no-shadows]
+//            [--max-depth N] [--spp N] [--msaa N] [--no-shadows]
 //            [--no-reflections] [--no-refractions] [--stats FILE.json] [--quiet] [--up AXIS]
 
 #include <iostream>
@@ -59,6 +59,9 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
                 }
             },
             "SQUARE"));
+    app.add_option("--msaa", o.msaa,
+                   "Raster multisample anti-aliasing: 1 (none, default), 2, 4 or 8 samples")
+        ->check(CLI::IsMember({1, 2, 4, 8}));
     app.add_flag("--no-shadows", no_shadows, "Trace no shadow feelers");
     app.add_flag("--no-reflections", no_reflections, "Trace no reflected rays");
     app.add_flag("--no-refractions", no_refractions, "Trace no refracted rays");

@@ -78,6 +78,8 @@ rt::gl::RasterRenderer& Job::raster() {
         stats_["gl"] = context_->description();
         if (!o_.quiet) std::printf("OpenGL: %s\n", context_->description().c_str());
         raster_ = std::make_unique<rt::gl::RasterRenderer>(*scene_);
+        raster_->set_msaa(o_.msaa);
+        stats_["msaa"] = o_.msaa;
         if (scene_->lights.size() > rt::gl::RasterRenderer::kMaxLights)
             std::cerr << o_.scene << ": lights: the raster view uses the first "
                       << rt::gl::RasterRenderer::kMaxLights << " of " << scene_->lights.size()

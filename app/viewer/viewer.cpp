@@ -87,6 +87,7 @@ Viewer::Viewer(const ViewerOptions& options)
     compositor_ = std::make_unique<rt::gl::Compositor>();
     rays_ = std::make_unique<rt::gl::RayOverlay>();
     settings_.max_spp = options.spp;
+    glGetIntegerv(GL_MAX_SAMPLES, &max_msaa_);
     std::printf("OpenGL: %s\n", window_.description().c_str());
     install(std::move(first_scene_), options.scene);
 }
@@ -214,6 +215,7 @@ void Viewer::update_trace() {
 
 // The raster image and item buffer at each level's size, for the explain map.
 void Viewer::raster_frames(TraceRequest& request) {
+    raster_->set_msaa(settings_.msaa);  // the explain map compares what the raster view shows
     for (int level : request.levels) {
         const rt::Camera camera = request.camera.resized(std::max(1, request.camera.cols / level),
                                                          std::max(1, request.camera.rows / level));
@@ -274,7 +276,9 @@ View Viewer::shown_view() const {
 bool Viewer::traced_stale() const { return shown_.stale(trace_key()); }
 
 GLuint Viewer::raster_texture(const rt::Camera& camera) {
-    if (raster_camera_ != camera) {
+    if (raster_camera_ != camera || raster_msaa_ != settings_.msaa) {
+        raster_->set_msaa(settings_.msaa);
+        raster_msaa_ = settings_.msaa;
         const rt::Stopwatch watch;
         raster_fb_ = &raster_->render_to_texture(camera);
         raster_texture_ = raster_fb_->texture();

@@ -50,6 +50,7 @@ struct Settings {
     float resolution_scale = 1.0f;  // of the window, for the traced image
     int threads = 0;                // 0: all cores
     int max_spp = 16;               // anti-aliasing after full resolution: 1, 4, 16 or 64
+    int msaa = 1;                   // the raster's samples per pixel: 1, 2 or 4
     float diff_scale = 0.5f;
 
     bool operator==(const Settings&) const = default;
@@ -161,6 +162,7 @@ class Viewer {
     void draw_raster_legend();
     void draw_light_markers(ImDrawList* draw, int width, int height, float scale);
     std::string traced_label() const;
+    std::string raster_label() const;
     std::string diff_label(int width) const;
     void keep_panel_inside();
     void draw_overlays(int width, int height);
@@ -204,6 +206,8 @@ class Viewer {
     int shown_spp_ = 1;  // its samples per pixel
     FrameStats stats_;
     std::optional<rt::Camera> raster_camera_, ids_camera_;  // what the textures hold
+    int raster_msaa_ = 1;                                   // and with how many samples
+    int max_msaa_ = 1;                                      // what the context offers
     GLuint raster_texture_ = 0, ids_texture_ = 0;
 
     Display display_;

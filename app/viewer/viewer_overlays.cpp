@@ -44,6 +44,11 @@ void diff_scale_bar(ImDrawList* draw, float w, float h, rt::gl::DiffMode mode, f
 
 }  // namespace
 
+std::string Viewer::raster_label() const {
+    return settings_.msaa > 1 ? "OpenGL, " + std::to_string(settings_.msaa) + "x MSAA"
+                              : std::string("OpenGL");
+}
+
 std::string Viewer::traced_label() const {
     std::string text = "ray traced";
     if (shown_.level() > 1) text += ", 1/" + std::to_string(shown_.level()) + " resolution";
@@ -111,8 +116,9 @@ void Viewer::draw_overlays(int width, int height) {
     const std::string traced = traced_label();
     if (view == View::kSplit) {
         const float x = display_.divider * w;
-        const char* left = display_.swap ? traced.c_str() : "OpenGL";
-        const char* right = display_.swap ? "OpenGL" : traced.c_str();
+        const std::string raster = raster_label();
+        const char* left = display_.swap ? traced.c_str() : raster.c_str();
+        const char* right = display_.swap ? raster.c_str() : traced.c_str();
         label(draw, ImVec2(x - ImGui::CalcTextSize(left).x - 12.0f, h - 30.0f), left);
         label(draw, ImVec2(x + 12.0f, h - 30.0f), right);
     } else if (view == View::kDiff) {
@@ -123,7 +129,7 @@ void Viewer::draw_overlays(int width, int height) {
               text.c_str());
     } else {
         const std::string text =
-            view == View::kRaster       ? std::string("OpenGL")
+            view == View::kRaster       ? raster_label()
             : view == View::kTrace      ? traced
             : view == View::kItemBuffer ? std::string("item buffer (object ids)")
             : traced_stale() || !explanation_

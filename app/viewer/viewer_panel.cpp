@@ -130,6 +130,15 @@ void Viewer::draw_panel() {
         std::find(std::begin(kSpp), std::end(kSpp), settings_.max_spp) - std::begin(kSpp));
     if (ImGui::Combo("anti-aliasing", &spp_index, spp_names, 4))
         settings_.max_spp = kSpp[std::clamp(spp_index, 0, 3)];
+    section("raster");
+    const int most = max_msaa_;
+    static constexpr int kMsaa[] = {1, 2, 4, 8};
+    const char* msaa_names[] = {"off", "2x", "4x", "8x"};
+    int msaa_index = static_cast<int>(
+        std::find(std::begin(kMsaa), std::end(kMsaa), settings_.msaa) - std::begin(kMsaa));
+    const int offered = most >= 8 ? 4 : most >= 4 ? 3 : most >= 2 ? 2 : 1;
+    if (ImGui::Combo("MSAA", &msaa_index, msaa_names, offered))
+        settings_.msaa = kMsaa[std::clamp(msaa_index, 0, offered - 1)];
 
     section("view");
     for (std::size_t i = 0; i < kViewCount; ++i) {
