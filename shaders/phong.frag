@@ -24,6 +24,14 @@ uniform int u_light_directional[kMaxLights];
 uniform vec3 u_light_vector[kMaxLights];  // position, or the direction the light travels
 uniform vec3 u_light_colour[kMaxLights];
 
+// Shadow maps (app/gl/shadow_maps.h): per light a row of six faces in one atlas, each
+// texel the distance from the light to the nearest surface.
+uniform int u_shadow_maps;  // 0: none, the classic pipeline
+uniform sampler2D u_shadow_atlas;
+uniform int u_shadow_size;  // texels a face side
+uniform int u_shadow_rows;  // lights with a row
+uniform mat4 u_face_vp[6];  // light-relative direction -> a face's clip space
+
 uniform vec3 u_ka;
 uniform vec3 u_kd;
 uniform vec3 u_ks;
@@ -79,6 +87,34 @@ vec3 pattern(vec3 object) {
     return sum == 0.0 || sum == 2.0 ? u_checker_a : u_checker_b;
 }
 
+// The share of the 3 x 3 texels around the point's direction that see it (percentage-
+// closer filtering). The bias grows with the slope: a texel spans 2 d / size at distance
+// d, and more of the surface where the light grazes it.
+float shadow_visibility(int light, vec3 world, vec3 n, vec3 to_light) {
+    vec3 rel = world - u_light_vector[light];
+    vec3 a = abs(rel);
+    int face = a.x >= a.y && a.x >= a.z ? (rel.x > 0.0 ? 0 : 1)
+               : a.y >= a.z            ? (rel.y > 0.0 ? 2 : 3)
+                                       : (rel.z > 0.0 ? 4 : 5);
+    vec4 clip = u_face_vp[face] * vec4(rel, 1.0);
+    float size = float(u_shadow_size);
+    vec2 texel = (clip.xy / clip.w * 0.5 + 0.5) * size;
+    float distance = length(rel);
+    float cos_t = clamp(dot(n, to_light), 0.05, 1.0);
+    float tan_t = sqrt(1.0 - cos_t * cos_t) / cos_t;
+    float bias = 2.0 * distance / size * (1.5 + 2.0 * min(tan_t, 10.0));
+    vec2 atlas = vec2(6.0 * size, float(u_shadow_rows) * size);
+    float lit = 0.0;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            vec2 t = clamp(floor(texel) + vec2(dx, dy) + 0.5, vec2(0.5), vec2(size - 0.5));
+            float stored = texture(u_shadow_atlas, (vec2(face, light) * size + t) / atlas).r;
+            lit += distance - bias <= stored ? 1.0 : 0.0;
+        }
+    }
+    return lit / 9.0;
+}
+
 void main() {
     Surface s = surface();
     vec3 to_viewer = normalize(u_eye - s.world);
@@ -100,9 +136,13 @@ void main() {
         to_light /= distance;
         float n_dot_l = dot(n, to_light);
         if (n_dot_l <= 0.0) continue;
+        float visible = u_shadow_maps == 1 && i < u_shadow_rows && u_light_directional[i] == 0
+                            ? shadow_visibility(i, s.world, n, to_light)
+                            : 1.0;
+        if (visible <= 0.0) continue;
         float r_dot_v = max(0.0, dot(reflect(-to_light, n), to_viewer));
         vec3 specular = r_dot_v > 0.0 ? u_ks * pow(r_dot_v, u_shininess) : vec3(0.0);
-        colour += (u_kd * c * n_dot_l + specular) * u_light_colour[i];
+        colour += visible * (u_kd * c * n_dot_l + specular) * u_light_colour[i];
     }
     o_colour = vec4(colour, 1.0);
 }

@@ -25,14 +25,18 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples)
       samples_(kind == Kind::kColour ? std::max(1, samples) : 1),
       fbo_(make_framebuffer()) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-    const int attachments = kind == Kind::kColour ? 1 : 2;
+    const int attachments = kind == Kind::kItemBuffer ? 2 : 1;
     for (int i = 0; i < attachments; ++i) {
         colour_[i] = make_texture();
         glBindTexture(GL_TEXTURE_2D, colour_[i].get());
-        const bool colour = kind == Kind::kColour;
-        glTexImage2D(GL_TEXTURE_2D, 0, colour ? GL_RGBA32F : GL_R32UI, width, height, 0,
-                     colour ? GL_RGBA : GL_RED_INTEGER, colour ? GL_FLOAT : GL_UNSIGNED_INT,
-                     nullptr);
+        if (kind == Kind::kColour)
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT,
+                         nullptr);
+        else if (kind == Kind::kDistance)
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, width, height, 0, GL_RED, GL_FLOAT, nullptr);
+        else
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, width, height, 0, GL_RED_INTEGER,
+                         GL_UNSIGNED_INT, nullptr);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i),
@@ -84,6 +88,10 @@ void Framebuffer::bind() const {
     glViewport(0, 0, width_, height_);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
+    if (kind_ == Kind::kDistance) {
+        const GLfloat far[4] = {3.0e38f, 0.0f, 0.0f, 0.0f};
+        glClearBufferfv(GL_COLOR, 0, far);
+    }
     if (kind_ == Kind::kItemBuffer) {
         const GLuint zero[4] = {0, 0, 0, 0};
         glClearBufferuiv(GL_COLOR, 0, zero);

@@ -12,8 +12,9 @@ namespace rt::gl {
 class Framebuffer {
   public:
     enum class Kind {
-        kColour,     // one RGBA32F attachment: linear colour, read back unencoded
-        kItemBuffer  // two R32UI attachments: object id + 1, triangle index
+        kColour,      // one RGBA32F attachment: linear colour, read back unencoded
+        kItemBuffer,  // two R32UI attachments: object id + 1, triangle index
+        kDistance     // one R32F attachment: a distance (shadow maps), cleared to "far"
     };
 
     // `samples` > 1 (colour only): drawn multisampled, into renderbuffers; resolve()
@@ -26,7 +27,7 @@ class Framebuffer {
     void resolve() const;  // after drawing; nothing to do with one sample
     // The colour attachments are textures, so a later pass can sample them.
     GLuint texture(int attachment = 0) const { return colour_[attachment].get(); }
-    void bind() const;  // as the draw target, with the viewport set and cleared
+    void bind() const;  // as the draw target, with the viewport set, depth (and ids) cleared
 
     Image read_colour() const;
     ItemBuffer read_item_buffer() const;

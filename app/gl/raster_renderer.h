@@ -9,6 +9,7 @@
 #include "app/gl/framebuffer.h"
 #include "app/gl/gpu_scene.h"
 #include "app/gl/program.h"
+#include "app/gl/shadow_maps.h"
 #include "core/image.h"
 #include "core/item_buffer.h"
 #include "core/scene.h"
@@ -36,6 +37,11 @@ class RasterRenderer {
     // item buffer stays one sample a pixel: an object id cannot be averaged.
     void set_msaa(int samples) { msaa_ = samples; }
     int msaa() const { return msaa_; }
+    // Shadows by shadow maps (app/gl/shadow_maps.h), `size` texels a face side; drawn again
+    // only when switched on or resized. Off: the classic pipeline's unshadowed Phong.
+    void set_shadow_maps(bool on, int size = 1024);
+    bool shadow_maps() const { return shadow_maps_; }
+    const ShadowMaps* shadow_map_data() const { return shadows_ ? &*shadows_ : nullptr; }
 
     // The two passes into whatever framebuffer is bound.
     void draw(const Camera& camera);
@@ -47,6 +53,8 @@ class RasterRenderer {
     void set_camera(Program& program, const Camera& camera);
     void draw_wires(const std::vector<DrawItem>& items, const Camera& camera);
     void set_material(const Material& m, const DrawItem& item);
+    void ensure_shadow_maps();
+    void set_shadow_uniforms();
     void set_object(Program& program, const DrawItem& item, const Camera& camera);
     Framebuffer& target(std::optional<Framebuffer>& fb, Framebuffer::Kind kind,
                         const Camera& camera, int samples = 1);
@@ -56,9 +64,13 @@ class RasterRenderer {
     Program phong_;
     Program ids_;
     Program wire_;
+    Program shadow_;
     std::optional<Framebuffer> colour_target_;
     std::optional<Framebuffer> id_target_;
     int msaa_ = 1;
+    bool shadow_maps_ = false;
+    int shadow_size_ = 1024;
+    std::optional<ShadowMaps> shadows_;
 };
 
 }  // namespace rt::gl

@@ -2,7 +2,7 @@
 //   rtrender SCENE [-o OUT.png|OUT.exr] [--mode trace|raster|both|itembuffer|explain] [--gl
 //   egl|osmesa]
 //            [--item-buffer on|off] [--accel bvh|bvh2|grid|brute] [--size WxH] [--threads N]
-//            [--max-depth N] [--spp N] [--msaa N] [--no-shadows]
+//            [--max-depth N] [--spp N] [--msaa N] [--raster-shadows none|map] [--no-shadows]
 //            [--no-reflections] [--no-refractions] [--stats FILE.json] [--quiet] [--up AXIS]
 
 #include <iostream>
@@ -62,6 +62,13 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     app.add_option("--msaa", o.msaa,
                    "Raster multisample anti-aliasing: 1 (none, default), 2, 4 or 8 samples")
         ->check(CLI::IsMember({1, 2, 4, 8}));
+    std::string raster_shadows = "none";
+    app.add_option("--raster-shadows", raster_shadows,
+                   "Raster shadows: none (the classic pipeline, default) or map (shadow maps)")
+        ->check(CLI::IsMember({"none", "map"}));
+    app.add_option("--shadow-map-size", o.shadow_map_size,
+                   "Shadow map texels a cube face side (default 1024)")
+        ->check(CLI::Range(16, 4096));
     app.add_flag("--no-shadows", no_shadows, "Trace no shadow feelers");
     app.add_flag("--no-reflections", no_reflections, "Trace no reflected rays");
     app.add_flag("--no-refractions", no_refractions, "Trace no refracted rays");
@@ -82,6 +89,7 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
         return false;
     }
     o.item_buffer = item_buffer == "on";
+    o.shadow_maps = raster_shadows == "map";
     if (o.item_buffer && o.spp > 1) {
         std::cerr << "rtrender: command line: --item-buffer on needs --spp 1 (the item buffer "
                      "holds the pixel centres' first hits only)\n";

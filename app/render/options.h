@@ -28,8 +28,10 @@ struct Options {
     std::string up = "y";  // a bare mesh's up axis (rt::LoadOptions)
     bool item_buffer = false;
     int threads = 0;
-    int spp = 1;   // traced samples per pixel (a square number)
-    int msaa = 1;  // raster samples per pixel (1, 2, 4 or 8)
+    int spp = 1;               // traced samples per pixel (a square number)
+    int msaa = 1;              // raster samples per pixel (1, 2, 4 or 8)
+    bool shadow_maps = false;  // --raster-shadows map
+    int shadow_map_size = 1024;
     rt::TraceOptions trace;
     bool quiet = false;
     std::string ray_tree;       // "X,Y": print that pixel's rays instead of rendering

@@ -79,7 +79,10 @@ rt::gl::RasterRenderer& Job::raster() {
         if (!o_.quiet) std::printf("OpenGL: %s\n", context_->description().c_str());
         raster_ = std::make_unique<rt::gl::RasterRenderer>(*scene_);
         raster_->set_msaa(o_.msaa);
+        raster_->set_shadow_maps(o_.shadow_maps, o_.shadow_map_size);
         stats_["msaa"] = o_.msaa;
+        stats_["raster_shadows"] = o_.shadow_maps ? "map" : "none";
+        if (o_.shadow_maps) stats_["shadow_map_size"] = o_.shadow_map_size;
         if (scene_->lights.size() > rt::gl::RasterRenderer::kMaxLights)
             std::cerr << o_.scene << ": lights: the raster view uses the first "
                       << rt::gl::RasterRenderer::kMaxLights << " of " << scene_->lights.size()

@@ -214,8 +214,15 @@ void Viewer::update_trace() {
 }
 
 // The raster image and item buffer at each level's size, for the explain map.
+void Viewer::apply_raster_settings() {
+    raster_->set_msaa(settings_.msaa);
+    raster_->set_shadow_maps(settings_.shadow_maps);
+    raster_msaa_ = settings_.msaa;
+    raster_shadows_ = settings_.shadow_maps;
+}
+
 void Viewer::raster_frames(TraceRequest& request) {
-    raster_->set_msaa(settings_.msaa);  // the explain map compares what the raster view shows
+    apply_raster_settings();  // the explain map compares what the raster view shows
     for (int level : request.levels) {
         const rt::Camera camera = request.camera.resized(std::max(1, request.camera.cols / level),
                                                          std::max(1, request.camera.rows / level));
@@ -276,9 +283,9 @@ View Viewer::shown_view() const {
 bool Viewer::traced_stale() const { return shown_.stale(trace_key()); }
 
 GLuint Viewer::raster_texture(const rt::Camera& camera) {
-    if (raster_camera_ != camera || raster_msaa_ != settings_.msaa) {
-        raster_->set_msaa(settings_.msaa);
-        raster_msaa_ = settings_.msaa;
+    if (raster_camera_ != camera || raster_msaa_ != settings_.msaa ||
+        raster_shadows_ != settings_.shadow_maps) {
+        apply_raster_settings();
         const rt::Stopwatch watch;
         raster_fb_ = &raster_->render_to_texture(camera);
         raster_texture_ = raster_fb_->texture();

@@ -51,6 +51,7 @@ struct Settings {
     int threads = 0;                // 0: all cores
     int max_spp = 16;               // anti-aliasing after full resolution: 1, 4, 16 or 64
     int msaa = 1;                   // the raster's samples per pixel: 1, 2 or 4
+    bool shadow_maps = false;       // the raster's shadows
     float diff_scale = 0.5f;
 
     bool operator==(const Settings&) const = default;
@@ -207,7 +208,9 @@ class Viewer {
     FrameStats stats_;
     std::optional<rt::Camera> raster_camera_, ids_camera_;  // what the textures hold
     int raster_msaa_ = 1;                                   // and with how many samples
-    int max_msaa_ = 1;                                      // what the context offers
+    bool raster_shadows_ = false;                           // and shadow maps or not
+    void apply_raster_settings();
+    int max_msaa_ = 1;  // what the context offers
     GLuint raster_texture_ = 0, ids_texture_ = 0;
 
     Display display_;

@@ -45,8 +45,10 @@ void diff_scale_bar(ImDrawList* draw, float w, float h, rt::gl::DiffMode mode, f
 }  // namespace
 
 std::string Viewer::raster_label() const {
-    return settings_.msaa > 1 ? "OpenGL, " + std::to_string(settings_.msaa) + "x MSAA"
-                              : std::string("OpenGL");
+    std::string text = "OpenGL";
+    if (settings_.shadow_maps) text += ", shadow maps";
+    if (settings_.msaa > 1) text += ", " + std::to_string(settings_.msaa) + "x MSAA";
+    return text;
 }
 
 std::string Viewer::traced_label() const {

@@ -139,6 +139,7 @@ void Viewer::draw_panel() {
     const int offered = most >= 8 ? 4 : most >= 4 ? 3 : most >= 2 ? 2 : 1;
     if (ImGui::Combo("MSAA", &msaa_index, msaa_names, offered))
         settings_.msaa = kMsaa[std::clamp(msaa_index, 0, offered - 1)];
+    ImGui::Checkbox("shadow maps (a depth cube per point light)", &settings_.shadow_maps);
 
     section("view");
     for (std::size_t i = 0; i < kViewCount; ++i) {

@@ -132,8 +132,13 @@ void Viewer::draw_raster_legend() {
                            mirrors && glass ? "mirror and glass"
                            : mirrors        ? "a mirror"
                                             : "glass");
-    ImGui::TextDisabled(
-        "OpenGL has no shadows either: each light reaches every surface facing it.");
+    if (settings_.shadow_maps)
+        ImGui::TextDisabled(
+            "Shadows come from shadow maps: a depth cube per point light, compared with a "
+            "bias and filtered; the why view shows where they miss the tracer's feelers.");
+    else
+        ImGui::TextDisabled(
+            "OpenGL has no shadows either: each light reaches every surface facing it.");
     ImGui::PopTextWrapPos();
 }
 

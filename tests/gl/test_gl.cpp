@@ -191,6 +191,45 @@ TEST_P(Gl, MsaaChangesEdgesOnly) {
                  std::runtime_error);
 }
 
+// The pixels a pipeline's shadows darken: lit minus shadowed, by more than 0.02 in a channel.
+std::vector<bool> darkened(const Image& lit, const Image& shadowed) {
+    std::vector<bool> out(lit.pixels.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const vec3 d = lit.pixels[i] - shadowed.pixels[i];
+        out[i] = std::max({d.x, d.y, d.z}) > 0.02f;
+    }
+    return out;
+}
+
+// Shadow maps against the tracer's shadow feelers: of the pixels either pipeline puts in
+// shadow, at least 90 % are in shadow in both (intersection over union), at 640 x 480.
+// Each pipeline's shadow is what switching its shadows on takes away from the same image.
+TEST_P(Gl, ShadowMapsAgreeWithShadowFeelers) {
+    for (const char* name : {"tutorial.json", "cornell.json"}) {
+        const Scene scene(load(name, 640, 480));
+        gl::RasterRenderer raster(scene);
+        const Image plain = raster.render(scene.camera);
+        raster.set_shadow_maps(true);
+        const Image mapped = raster.render(scene.camera);
+        RenderOptions local;
+        local.trace.reflections = local.trace.refractions = local.trace.shadows = false;
+        const Image unshadowed = render(scene, local);
+        local.trace.shadows = true;
+        const Image shadowed = render(scene, local);
+        const std::vector<bool> a = darkened(plain, mapped), b = darkened(unshadowed, shadowed);
+        std::size_t both = 0, either = 0;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            both += a[i] && b[i];
+            either += a[i] || b[i];
+        }
+        ASSERT_GT(either, 1000u) << name;
+        const double iou = static_cast<double>(both) / static_cast<double>(either);
+        EXPECT_GE(iou, 0.9) << name << ": " << both << " of " << either << " shadowed pixels agree";
+        std::printf("%s: shadow maps and feelers agree on %.3f of the shadowed pixels\n", name,
+                    iou);
+    }
+}
+
 // A camera skimming the floor, just above it or just under it (an orbit can take it
 // there): the floor is nearer than any object, and the raster must not clip it at the
 // near plane while the tracer draws it. With the near plane chosen from the objects alone,
