@@ -44,9 +44,15 @@ int sphere_segments_for(float radius_pixels) {
 float projected_radius_pixels(const Camera& camera, const vec3& centre, float radius) {
     const float depth = glm::dot(camera.eye - centre, camera.n);  // along the view axis
     const float distance = glm::length(camera.eye - centre);
-    if (distance <= radius * 1.01f || depth <= radius) return 1e6f;  // around or behind the eye
+    // Wholly behind the eye it is not seen: the coarsest mesh will do. (A cube map's faces
+    // look every way: from inside many_spheres' field of 1601 balls, half of them behind a
+    // face and a row across its eye plane were drawn at the finest level, 65k triangles each.)
+    if (depth < -radius * 1.01f) return 0.0f;
+    if (distance <= radius * 1.01f) return 1e6f;  // around the eye
+    // Across the eye plane, off to the side: no nearer than its nearest point.
+    const float nearest = depth > radius ? depth - radius : distance - radius;
     const float pixels_per_unit =
-        camera.N / (depth - radius) * static_cast<float>(camera.rows) / (2.0f * camera.H);
+        camera.N / nearest * static_cast<float>(camera.rows) / (2.0f * camera.H);
     return radius * pixels_per_unit;
 }
 

@@ -24,13 +24,24 @@ uniform int u_light_directional[kMaxLights];
 uniform vec3 u_light_vector[kMaxLights];  // position, or the direction the light travels
 uniform vec3 u_light_colour[kMaxLights];
 
-// Shadow maps (app/gl/shadow_maps.h): per light a row of six faces in one atlas, each
+// Shadow maps (app/gl/cube_atlas.h): per light a row of six faces in one atlas, each
 // texel the distance from the light to the nearest surface.
 uniform int u_shadow_maps;  // 0: none, the classic pipeline
 uniform sampler2D u_shadow_atlas;
 uniform int u_shadow_size;  // texels a face side
 uniform int u_shadow_rows;  // lights with a row
-uniform mat4 u_face_vp[6];  // light-relative direction -> a face's clip space
+uniform mat4 u_face_vp[6];  // direction from a cube's centre -> a face's clip space
+
+// Environment maps (app/gl/cube_atlas.h): per mirror or glass object a row of six faces,
+// the rest of the scene seen from its centre.
+uniform int u_env_on;
+uniform int u_env_row;  // this object's row, or -1
+uniform sampler2D u_env_atlas;
+uniform int u_env_size;
+uniform int u_env_rows;
+uniform float u_kr;   // reflectivity
+uniform float u_kt;   // transparency
+uniform float u_ior;
 
 uniform vec3 u_ka;
 uniform vec3 u_kd;
@@ -87,18 +98,37 @@ vec3 pattern(vec3 object) {
     return sum == 0.0 || sum == 2.0 ? u_checker_a : u_checker_b;
 }
 
+// Which of a cube's faces a direction from its centre goes through, and where on it (in
+// texels from the face's corner).
+int cube_face(vec3 d) {
+    vec3 a = abs(d);
+    return a.x >= a.y && a.x >= a.z ? (d.x > 0.0 ? 0 : 1)
+           : a.y >= a.z            ? (d.y > 0.0 ? 2 : 3)
+                                   : (d.z > 0.0 ? 4 : 5);
+}
+vec2 face_texel(int face, vec3 d, float size) {
+    vec4 clip = u_face_vp[face] * vec4(d, 1.0);
+    return (clip.xy / clip.w * 0.5 + 0.5) * size;
+}
+
+// The environment along `d`, as if it were infinitely far (so a near object shows with
+// parallax error), filtered between texels of one face.
+vec3 environment(vec3 d) {
+    int face = cube_face(d);
+    float size = float(u_env_size);
+    vec2 t = clamp(face_texel(face, d, size), vec2(0.5), vec2(size - 0.5));
+    vec2 atlas = vec2(6.0 * size, float(u_env_rows) * size);
+    return texture(u_env_atlas, (vec2(face, u_env_row) * size + t) / atlas).rgb;
+}
+
 // The share of the 3 x 3 texels around the point's direction that see it (percentage-
 // closer filtering). The bias grows with the slope: a texel spans 2 d / size at distance
 // d, and more of the surface where the light grazes it.
 float shadow_visibility(int light, vec3 world, vec3 n, vec3 to_light) {
     vec3 rel = world - u_light_vector[light];
-    vec3 a = abs(rel);
-    int face = a.x >= a.y && a.x >= a.z ? (rel.x > 0.0 ? 0 : 1)
-               : a.y >= a.z            ? (rel.y > 0.0 ? 2 : 3)
-                                       : (rel.z > 0.0 ? 4 : 5);
-    vec4 clip = u_face_vp[face] * vec4(rel, 1.0);
+    int face = cube_face(rel);
     float size = float(u_shadow_size);
-    vec2 texel = (clip.xy / clip.w * 0.5 + 0.5) * size;
+    vec2 texel = face_texel(face, rel, size);
     float distance = length(rel);
     float cos_t = clamp(dot(n, to_light), 0.05, 1.0);
     float tan_t = sqrt(1.0 - cos_t * cos_t) / cos_t;
@@ -143,6 +173,16 @@ void main() {
         float r_dot_v = max(0.0, dot(reflect(-to_light, n), to_viewer));
         vec3 specular = r_dot_v > 0.0 ? u_ks * pow(r_dot_v, u_shininess) : vec3(0.0);
         colour += visible * (u_kd * c * n_dot_l + specular) * u_light_colour[i];
+    }
+    if (u_env_on == 1 && u_env_row >= 0) {
+        // The tracer's R = local + kr R_reflected + kt R_refracted, with the rays' colours
+        // looked up instead of traced; the refraction bends once, at this surface.
+        vec3 incoming = -to_viewer;
+        if (u_kr > 0.0) colour += u_kr * environment(reflect(incoming, n));
+        if (u_kt > 0.0) {
+            vec3 t = refract(incoming, n, 1.0 / u_ior);
+            colour += u_kt * environment(dot(t, t) > 0.0 ? t : reflect(incoming, n));
+        }
     }
     o_colour = vec4(colour, 1.0);
 }

@@ -1,5 +1,5 @@
 #version 330 core
-// A shadow map's texel (app/gl/shadow_maps.h): the distance from the light to the
+// A shadow map's texel (app/gl/cube_atlas.h): the distance from the light to the
 // nearest surface in that direction, linear, so that phong.frag compares distances.
 
 in vec3 v_world;

@@ -1,7 +1,11 @@
 #include "app/gl/raster_renderer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <utility>
 
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include "app/gl/debug.h"
@@ -15,59 +19,6 @@ RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& 
       ids_(shaders / "raster.vert", shaders / "itembuffer.frag"),
       wire_(shaders / "raster.vert", shaders / "wire.frag"),
       shadow_(shaders / "raster.vert", shaders / "shadow.frag") {}
-
-void RasterRenderer::set_shadow_maps(bool on, int size) {
-    shadow_maps_ = on;
-    shadow_size_ = size;
-}
-
-// Draws the shadow maps if they are asked for and missing or of another size, leaving the
-// framebuffer binding and viewport as they were.
-void RasterRenderer::ensure_shadow_maps() {
-    if (!shadow_maps_ || scene_.lights.empty() || (shadows_ && shadows_->asked() == shadow_size_))
-        return;
-    GLint framebuffer = 0, viewport[4] = {};
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    shadows_.emplace(static_cast<int>(scene_.lights.size()), shadow_size_);
-    const int size = shadows_->size();
-    shadows_->atlas().bind();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);
-    for (int i = 0; i < shadows_->lights(); ++i) {
-        const Light& light = scene_.lights[static_cast<std::size_t>(i)];
-        if (light.type != Light::Type::kPoint) continue;  // no map: lit everywhere
-        for (int face = 0; face < 6; ++face) {
-            const Camera camera = ShadowMaps::face_camera(light.position, face, size);
-            set_camera(shadow_, camera);
-            shadow_.set("u_light", light.position);
-            glViewport(face * size, i * size, size, size);
-            for (const DrawItem& item : gpu_.draw_list(camera)) {
-                if (item.wire) continue;
-                set_object(shadow_, item, camera);
-                item.mesh->draw(item.first_vertex, item.vertex_count);
-            }
-        }
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    check("RasterRenderer::ensure_shadow_maps");
-}
-
-void RasterRenderer::set_shadow_uniforms() {
-    const bool on = shadow_maps_ && shadows_.has_value();
-    phong_.set("u_shadow_maps", on ? 1 : 0);
-    if (!on) return;
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, shadows_->texture());
-    phong_.set("u_shadow_atlas", 0);
-    phong_.set("u_shadow_size", shadows_->size());
-    phong_.set("u_shadow_rows", shadows_->lights());
-    for (int f = 0; f < 6; ++f)
-        phong_.set(("u_face_vp[" + std::to_string(f) + "]").c_str(),
-                   shadows_->faces()[static_cast<std::size_t>(f)]);
-}
 
 void RasterRenderer::set_camera(Program& program, const Camera& camera) {
     const DepthRange depth = gpu_.depth_range(camera);
@@ -91,6 +42,9 @@ void RasterRenderer::set_material(const Material& m, const DrawItem& item) {
     phong_.set("u_kd", m.kd);
     phong_.set("u_ks", m.ks);
     phong_.set("u_shininess", m.shininess);
+    phong_.set("u_kr", m.reflectivity);
+    phong_.set("u_kt", m.transparency);
+    phong_.set("u_ior", m.ior);
     phong_.set("u_checker", m.checker ? 1 : 0);
     if (m.checker) {
         phong_.set("u_checker_a", m.checker->colour_a);
@@ -110,8 +64,16 @@ void RasterRenderer::set_material(const Material& m, const DrawItem& item) {
 
 void RasterRenderer::draw(const Camera& camera) {
     ensure_shadow_maps();
+    ensure_environment_maps();
+    draw_scene(camera, -1, env_ ? &*env_ : nullptr);
+}
+
+// Phong over every object but `skip` (an object index, or -1), mirrors and glass looking
+// up `env` when given.
+void RasterRenderer::draw_scene(const Camera& camera, int skip, const CubeAtlas* env) {
     set_camera(phong_, camera);
     set_shadow_uniforms();
+    set_environment_uniforms(env);
     phong_.set("u_ambient", scene_.ambient);
     const int lights = std::min(static_cast<int>(scene_.lights.size()), kMaxLights);
     phong_.set("u_light_count", lights);
@@ -126,11 +88,23 @@ void RasterRenderer::draw(const Camera& camera) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);  // surfaces are two-sided, as in the tracer
-    const std::vector<DrawItem> items = gpu_.draw_list(camera);
-    for (const DrawItem& item : items) {
-        if (item.wire) continue;
+    std::vector<DrawItem> items = gpu_.draw_list(camera);
+    // Nearest first, so that the depth test rejects hidden fragments before they are shaded
+    // (many_spheres' environment maps, looking across 1601 balls: 145 s unsorted, 2 s sorted).
+    const auto distance = [&](const DrawItem& item) {
+        return glm::length(glm::vec3((item.model * item.shape)[3]) - camera.eye);
+    };
+    std::vector<std::pair<float, std::size_t>> order;
+    for (std::size_t i = 0; i < items.size(); ++i)
+        order.emplace_back(items[i].plane ? INFINITY : distance(items[i]), i);
+    std::sort(order.begin(), order.end());
+    for (const auto& [d, i] : order) {
+        const DrawItem& item = items[i];
+        if (item.wire || static_cast<int>(item.object_id) - 1 == skip) continue;
         set_object(phong_, item, camera);
         set_material(scene_.materials[item.material], item);
+        const std::size_t object = item.object_id - 1;
+        phong_.set("u_env_row", env && object < env_row_.size() ? env_row_[object] : -1);
         item.mesh->draw(item.first_vertex, item.vertex_count);
     }
     draw_wires(items, camera);

@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <optional>
 
+#include "app/gl/cube_atlas.h"
 #include "app/gl/framebuffer.h"
 #include "app/gl/gpu_scene.h"
 #include "app/gl/program.h"
-#include "app/gl/shadow_maps.h"
 #include "core/image.h"
 #include "core/item_buffer.h"
 #include "core/scene.h"
@@ -37,11 +37,16 @@ class RasterRenderer {
     // item buffer stays one sample a pixel: an object id cannot be averaged.
     void set_msaa(int samples) { msaa_ = samples; }
     int msaa() const { return msaa_; }
-    // Shadows by shadow maps (app/gl/shadow_maps.h), `size` texels a face side; drawn again
+    // Shadows by shadow maps (app/gl/cube_atlas.h), `size` texels a face side; drawn again
     // only when switched on or resized. Off: the classic pipeline's unshadowed Phong.
     void set_shadow_maps(bool on, int size = 1024);
     bool shadow_maps() const { return shadow_maps_; }
-    const ShadowMaps* shadow_map_data() const { return shadows_ ? &*shadows_ : nullptr; }
+    const CubeAtlas* shadow_map_data() const { return shadows_ ? &*shadows_ : nullptr; }
+    // Environment maps for mirrors and glass (app/gl/cube_atlas.h): the reflected and
+    // refracted directions looked up in a cube seen from the object's centre, weighted by
+    // the material's reflectivity and transparency as the tracer weights its rays.
+    void set_environment_maps(bool on, int size = 256);
+    bool environment_maps() const { return env_maps_; }
 
     // The two passes into whatever framebuffer is bound.
     void draw(const Camera& camera);
@@ -53,8 +58,11 @@ class RasterRenderer {
     void set_camera(Program& program, const Camera& camera);
     void draw_wires(const std::vector<DrawItem>& items, const Camera& camera);
     void set_material(const Material& m, const DrawItem& item);
+    void draw_scene(const Camera& camera, int skip, const CubeAtlas* env);
     void ensure_shadow_maps();
     void set_shadow_uniforms();
+    void ensure_environment_maps();
+    void set_environment_uniforms(const CubeAtlas* env);
     void set_object(Program& program, const DrawItem& item, const Camera& camera);
     Framebuffer& target(std::optional<Framebuffer>& fb, Framebuffer::Kind kind,
                         const Camera& camera, int samples = 1);
@@ -70,7 +78,13 @@ class RasterRenderer {
     int msaa_ = 1;
     bool shadow_maps_ = false;
     int shadow_size_ = 1024;
-    std::optional<ShadowMaps> shadows_;
+    std::optional<CubeAtlas> shadows_;
+    static constexpr int kEnvPasses = 2;
+    static constexpr std::size_t kMaxEnvMaps = 4;  // mirrors and glass with a map
+    bool env_maps_ = false;
+    int env_size_ = 256;
+    std::optional<CubeAtlas> env_;
+    std::vector<int> env_row_;  // per object: its environment map's row, or -1
 };
 
 }  // namespace rt::gl

@@ -2,7 +2,8 @@
 //   rtrender SCENE [-o OUT.png|OUT.exr] [--mode trace|raster|both|itembuffer|explain] [--gl
 //   egl|osmesa]
 //            [--item-buffer on|off] [--accel bvh|bvh2|grid|brute] [--size WxH] [--threads N]
-//            [--max-depth N] [--spp N] [--msaa N] [--raster-shadows none|map] [--no-shadows]
+//            [--max-depth N] [--spp N] [--msaa N] [--raster-shadows none|map]
+//            [--raster-reflections none|envmap] [--no-shadows]
 //            [--no-reflections] [--no-refractions] [--stats FILE.json] [--quiet] [--up AXIS]
 
 #include <iostream>
@@ -69,6 +70,14 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     app.add_option("--shadow-map-size", o.shadow_map_size,
                    "Shadow map texels a cube face side (default 1024)")
         ->check(CLI::Range(16, 4096));
+    std::string raster_reflections = "none";
+    app.add_option("--raster-reflections", raster_reflections,
+                   "Raster mirrors and glass: none (their local colour, default) or envmap "
+                   "(environment maps)")
+        ->check(CLI::IsMember({"none", "envmap"}));
+    app.add_option("--envmap-size", o.envmap_size,
+                   "Environment map texels a cube face side (default 256)")
+        ->check(CLI::Range(16, 2048));
     app.add_flag("--no-shadows", no_shadows, "Trace no shadow feelers");
     app.add_flag("--no-reflections", no_reflections, "Trace no reflected rays");
     app.add_flag("--no-refractions", no_refractions, "Trace no refracted rays");
@@ -90,6 +99,7 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     }
     o.item_buffer = item_buffer == "on";
     o.shadow_maps = raster_shadows == "map";
+    o.environment_maps = raster_reflections == "envmap";
     if (o.item_buffer && o.spp > 1) {
         std::cerr << "rtrender: command line: --item-buffer on needs --spp 1 (the item buffer "
                      "holds the pixel centres' first hits only)\n";

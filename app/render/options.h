@@ -32,6 +32,8 @@ struct Options {
     int msaa = 1;              // raster samples per pixel (1, 2, 4 or 8)
     bool shadow_maps = false;  // --raster-shadows map
     int shadow_map_size = 1024;
+    bool environment_maps = false;  // --raster-reflections envmap
+    int envmap_size = 256;
     rt::TraceOptions trace;
     bool quiet = false;
     std::string ray_tree;       // "X,Y": print that pixel's rays instead of rendering

@@ -80,6 +80,9 @@ rt::gl::RasterRenderer& Job::raster() {
         raster_ = std::make_unique<rt::gl::RasterRenderer>(*scene_);
         raster_->set_msaa(o_.msaa);
         raster_->set_shadow_maps(o_.shadow_maps, o_.shadow_map_size);
+        raster_->set_environment_maps(o_.environment_maps, o_.envmap_size);
+        stats_["raster_reflections"] = o_.environment_maps ? "envmap" : "none";
+        if (o_.environment_maps) stats_["envmap_size"] = o_.envmap_size;
         stats_["msaa"] = o_.msaa;
         stats_["raster_shadows"] = o_.shadow_maps ? "map" : "none";
         if (o_.shadow_maps) stats_["shadow_map_size"] = o_.shadow_map_size;

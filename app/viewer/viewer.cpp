@@ -217,6 +217,8 @@ void Viewer::update_trace() {
 void Viewer::apply_raster_settings() {
     raster_->set_msaa(settings_.msaa);
     raster_->set_shadow_maps(settings_.shadow_maps);
+    raster_->set_environment_maps(settings_.environment_maps);
+    raster_env_ = settings_.environment_maps;
     raster_msaa_ = settings_.msaa;
     raster_shadows_ = settings_.shadow_maps;
 }
@@ -284,7 +286,7 @@ bool Viewer::traced_stale() const { return shown_.stale(trace_key()); }
 
 GLuint Viewer::raster_texture(const rt::Camera& camera) {
     if (raster_camera_ != camera || raster_msaa_ != settings_.msaa ||
-        raster_shadows_ != settings_.shadow_maps) {
+        raster_shadows_ != settings_.shadow_maps || raster_env_ != settings_.environment_maps) {
         apply_raster_settings();
         const rt::Stopwatch watch;
         raster_fb_ = &raster_->render_to_texture(camera);

@@ -52,6 +52,7 @@ struct Settings {
     int max_spp = 16;               // anti-aliasing after full resolution: 1, 4, 16 or 64
     int msaa = 1;                   // the raster's samples per pixel: 1, 2 or 4
     bool shadow_maps = false;       // the raster's shadows
+    bool environment_maps = false;  // the raster's mirrors and glass
     float diff_scale = 0.5f;
 
     bool operator==(const Settings&) const = default;
@@ -209,6 +210,7 @@ class Viewer {
     std::optional<rt::Camera> raster_camera_, ids_camera_;  // what the textures hold
     int raster_msaa_ = 1;                                   // and with how many samples
     bool raster_shadows_ = false;                           // and shadow maps or not
+    bool raster_env_ = false;                               // and environment maps or not
     void apply_raster_settings();
     int max_msaa_ = 1;  // what the context offers
     GLuint raster_texture_ = 0, ids_texture_ = 0;

@@ -47,6 +47,7 @@ void diff_scale_bar(ImDrawList* draw, float w, float h, rt::gl::DiffMode mode, f
 std::string Viewer::raster_label() const {
     std::string text = "OpenGL";
     if (settings_.shadow_maps) text += ", shadow maps";
+    if (settings_.environment_maps) text += ", env maps";
     if (settings_.msaa > 1) text += ", " + std::to_string(settings_.msaa) + "x MSAA";
     return text;
 }

@@ -140,6 +140,7 @@ void Viewer::draw_panel() {
     if (ImGui::Combo("MSAA", &msaa_index, msaa_names, offered))
         settings_.msaa = kMsaa[std::clamp(msaa_index, 0, offered - 1)];
     ImGui::Checkbox("shadow maps (a depth cube per point light)", &settings_.shadow_maps);
+    ImGui::Checkbox("environment maps (mirrors and glass)", &settings_.environment_maps);
 
     section("view");
     for (std::size_t i = 0; i < kViewCount; ++i) {

@@ -125,7 +125,11 @@ void Viewer::draw_raster_legend() {
     const bool glass = std::any_of(m.begin(), m.end(),
                                    [](const rt::Material& x) { return x.transparency > 0.0f; });
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 300.0f);
-    if (mirrors || glass)
+    if ((mirrors || glass) && settings_.environment_maps)
+        ImGui::TextDisabled(
+            "Mirrors and glass look up environment maps, seen from each object's centre: "
+            "near objects show in the wrong place in them (parallax), and glass bends once.");
+    else if (mirrors || glass)
         ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.5f, 1.0f),
                            "OpenGL draws %s with its local Phong colour only, often dark: the "
                            "classic pipeline has no reflection or refraction.",
