@@ -50,8 +50,8 @@ const vec3& ExplainTerms::operator[](Cause c) const {
     throw std::invalid_argument("ExplainTerms: none is not a term");
 }
 
-ExplainTerms explain_terms(const PrimaryParts& traced, const vec3& raster,
-                           std::uint32_t raster_id) {
+ExplainTerms explain_terms(const PrimaryParts& traced, const vec3& raster, std::uint32_t raster_id,
+                           const RasterPixelTricks& tricks) {
     ExplainTerms t;
     const std::uint32_t traced_id =
         traced.object == PrimaryParts::kNoObject ? ItemBuffer::kEmpty : traced.object + 1;
@@ -61,10 +61,12 @@ ExplainTerms explain_terms(const PrimaryParts& traced, const vec3& raster,
     } else if (traced_id != raster_id) {
         t.geometry = colour - raster;
     } else {
-        t.shading = traced.unblocked - raster;
-        t.shadow = traced.local - traced.unblocked;
-        t.reflection = traced.reflection;
-        t.refraction = traced.refraction;
+        // The raster's local part: what is left of it without its tricks.
+        const vec3 local = raster - tricks.shadow - tricks.reflection - tricks.refraction;
+        t.shading = traced.unblocked - local;
+        t.shadow = (traced.local - traced.unblocked) - tricks.shadow;
+        t.reflection = traced.reflection - tricks.reflection;
+        t.refraction = traced.refraction - tricks.refraction;
     }
     return t;
 }
@@ -82,11 +84,20 @@ Cause cause_of(const ExplainTerms& terms, float displayed_difference) {
 }
 
 ExplainMap explain(const Scene& scene, const Camera& camera, const RenderOptions& options,
-                   const Image& raster, const ItemBuffer& raster_ids, std::stop_token stop) {
+                   const Image& raster, const ItemBuffer& raster_ids, std::stop_token stop,
+                   const RasterTricks* tricks) {
     const int width = camera.cols, height = camera.rows;
     if (raster.width != width || raster.height != height || raster_ids.width != width ||
         raster_ids.height != height)
         throw std::invalid_argument("explain: the raster image's or item buffer's size differs");
+    const auto fits = [&](const Image& im) {
+        return im.pixels.empty() || (im.width == width && im.height == height);
+    };
+    if (tricks && !(fits(tricks->shadow) && fits(tricks->reflection) && fits(tricks->refraction)))
+        throw std::invalid_argument("explain: a raster trick's image size differs");
+    const auto at = [](const Image& im, std::size_t i) {
+        return im.pixels.empty() ? vec3(0.0f) : im.pixels[i];
+    };
     ExplainMap map;
     map.width = width;
     map.height = height;
@@ -110,7 +121,11 @@ ExplainMap explain(const Scene& scene, const Camera& camera, const RenderOptions
                 const PrimaryParts parts = mine.trace_parts(camera.ray(x, y), local);
                 const vec3 colour = parts.colour();
                 map.traced.pixels[i] = finite(colour) ? colour : vec3(0.0f);
-                map.terms[i] = explain_terms(parts, raster.pixels[i], raster_ids.object[i]);
+                RasterPixelTricks added;
+                if (tricks)
+                    added = {at(tricks->shadow, i), at(tricks->reflection, i),
+                             at(tricks->refraction, i)};
+                map.terms[i] = explain_terms(parts, raster.pixels[i], raster_ids.object[i], added);
                 const vec3 shown =
                     finite(raster.pixels[i])
                         ? glm::abs(encoded(map.traced.pixels[i]) - encoded(raster.pixels[i]))

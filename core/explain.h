@@ -9,6 +9,13 @@
 //   reflection  the reflected ray's weighted colour;
 //   refraction  the refracted ray's weighted colour.
 //
+// With the raster's classic tricks on (shadow maps, environment maps), each term compares
+// like with like: the raster image is split into its local part and what each trick added
+// (RasterTricks), and the shadow, reflection and refraction terms become the tracer's
+// minus the raster's (the feelers against the shadow map, the rays against the
+// environment map); shading compares the local parts. The terms still sum to traced -
+// raster exactly.
+//
 // A pixel's cause is its largest term (largest channel, by magnitude), or none where the
 // displayed images differ by at most 2/255 in every channel (compare_images' threshold).
 
@@ -39,6 +46,13 @@ struct ExplainTerms {
     const vec3& operator[](Cause c) const;  // not for kNone
 };
 
+// What the raster's tricks added to each pixel (linear RGB, images of the camera's size,
+// empty where a trick is off): the shadow maps' darkening (<= 0), the environment maps'
+// reflection and refraction terms.
+struct RasterTricks {
+    Image shadow, reflection, refraction;
+};
+
 struct ExplainMap {
     int width = 0, height = 0;  // rows bottom first, as Image
     std::vector<ExplainTerms> terms;
@@ -56,10 +70,15 @@ struct ExplainMap {
 // item buffer (both of the camera's size, or std::invalid_argument). `stop` cancels
 // between tiles (the map is then incomplete and says so).
 ExplainMap explain(const Scene& scene, const Camera& camera, const RenderOptions& options,
-                   const Image& raster, const ItemBuffer& raster_ids, std::stop_token stop = {});
+                   const Image& raster, const ItemBuffer& raster_ids, std::stop_token stop = {},
+                   const RasterTricks* tricks = nullptr);
 
 // Splits one pixel (exposed for the tests): the tracer's parts against the raster's.
-ExplainTerms explain_terms(const PrimaryParts& traced, const vec3& raster, std::uint32_t raster_id);
+struct RasterPixelTricks {
+    vec3 shadow{0.0f}, reflection{0.0f}, refraction{0.0f};
+};
+ExplainTerms explain_terms(const PrimaryParts& traced, const vec3& raster, std::uint32_t raster_id,
+                           const RasterPixelTricks& tricks = {});
 Cause cause_of(const ExplainTerms& terms, float displayed_difference);
 
 // Per cause (kCauseNames' order): the share of the pixels whose cause it is, and the

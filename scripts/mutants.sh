@@ -196,7 +196,7 @@ mutant glass-nesting-ignored core/medium.h \
 # item buffer's +1 (every pixel a geometry pixel), and the threshold ignored (no pixel
 # without a cause).
 mutant explain-shadow-sign core/explain.cpp \
-    't.shadow = traced.local - traced.unblocked;' 't.shadow = traced.unblocked - traced.local;' \
+    't.shadow = (traced.local - traced.unblocked) - tricks.shadow;' 't.shadow = (traced.unblocked - traced.local) - tricks.shadow;' \
     rt_tests $(unit 'Explain.*')
 mutant explain-ids-off-by-one core/explain.cpp \
     'traced.object == PrimaryParts::kNoObject ? ItemBuffer::kEmpty : traced.object + 1;' \

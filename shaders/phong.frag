@@ -35,6 +35,7 @@ uniform mat4 u_face_vp[6];  // direction from a cube's centre -> a face's clip s
 // Environment maps (app/gl/cube_atlas.h): per mirror or glass object a row of six faces,
 // the rest of the scene seen from its centre.
 uniform int u_env_on;
+uniform int u_env_terms;  // 1: reflection, 2: refraction, 3: both (the explain map asks for one)
 uniform int u_env_row;  // this object's row, or -1
 uniform sampler2D u_env_atlas;
 uniform int u_env_size;
@@ -178,8 +179,8 @@ void main() {
         // The tracer's R = local + kr R_reflected + kt R_refracted, with the rays' colours
         // looked up instead of traced; the refraction bends once, at this surface.
         vec3 incoming = -to_viewer;
-        if (u_kr > 0.0) colour += u_kr * environment(reflect(incoming, n));
-        if (u_kt > 0.0) {
+        if (u_kr > 0.0 && (u_env_terms & 1) != 0) colour += u_kr * environment(reflect(incoming, n));
+        if (u_kt > 0.0 && (u_env_terms & 2) != 0) {
             vec3 t = refract(incoming, n, 1.0 / u_ior);
             colour += u_kt * environment(dot(t, t) > 0.0 ? t : reflect(incoming, n));
         }

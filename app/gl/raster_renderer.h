@@ -10,6 +10,7 @@
 #include "app/gl/framebuffer.h"
 #include "app/gl/gpu_scene.h"
 #include "app/gl/program.h"
+#include "core/explain.h"
 #include "core/image.h"
 #include "core/item_buffer.h"
 #include "core/scene.h"
@@ -48,6 +49,16 @@ class RasterRenderer {
     void set_environment_maps(bool on, int size = 256);
     bool environment_maps() const { return env_maps_; }
 
+    // For the explain map: the image with the tricks as set, its item buffer, and what
+    // each trick added (rendered again without it; empty where it is off), so that each
+    // term compares like with like.
+    struct ForExplain {
+        Image image;
+        ItemBuffer ids;
+        RasterTricks tricks;
+    };
+    ForExplain render_for_explain(const Camera& camera);
+
     // The two passes into whatever framebuffer is bound.
     void draw(const Camera& camera);
     void draw_ids(const Camera& camera);
@@ -85,6 +96,7 @@ class RasterRenderer {
     int env_size_ = 256;
     std::optional<CubeAtlas> env_;
     std::vector<int> env_row_;  // per object: its environment map's row, or -1
+    int env_terms_ = 3;  // which environment terms phong.frag adds: 1 reflection, 2 refraction
 };
 
 }  // namespace rt::gl

@@ -155,8 +155,34 @@ void RasterRenderer::ensure_environment_maps() {
     check("RasterRenderer::ensure_environment_maps");
 }
 
+RasterRenderer::ForExplain RasterRenderer::render_for_explain(const Camera& camera) {
+    ForExplain out;
+    out.image = render(camera);
+    out.ids = render_item_buffer(camera);
+    const auto added = [&](const Image& without) {  // what the trick added: with - without
+        Image d(out.image.width, out.image.height);
+        for (std::size_t i = 0; i < d.pixels.size(); ++i)
+            d.pixels[i] = out.image.pixels[i] - without.pixels[i];
+        return d;
+    };
+    if (shadow_maps_ && shadows_) {
+        shadow_maps_ = false;  // the maps stay; they are just not looked up
+        out.tricks.shadow = added(render(camera));
+        shadow_maps_ = true;
+    }
+    if (env_maps_ && env_) {
+        env_terms_ = 2;
+        out.tricks.reflection = added(render(camera));
+        env_terms_ = 1;
+        out.tricks.refraction = added(render(camera));
+        env_terms_ = 3;
+    }
+    return out;
+}
+
 void RasterRenderer::set_environment_uniforms(const CubeAtlas* env) {
     phong_.set("u_env_on", env ? 1 : 0);
+    phong_.set("u_env_terms", env_terms_);
     if (!env) return;
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, env->texture());

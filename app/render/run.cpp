@@ -59,7 +59,7 @@ class Job {
     rt::Image render_traced(const rt::ItemBuffer* item_buffer, rt::RenderStats& stats,
                             const char* label);
     void report_diff(const rt::Image& raster_image, const rt::Image& traced);
-    void explain(const rt::Image& raster_image, bool write_map);
+    void explain(bool write_map);
     void write_stats();
     int ray_tree();
 
@@ -190,13 +190,15 @@ void Job::report_diff(const rt::Image& raster_image, const rt::Image& traced) {
 
 // Why raster and traced differ (core/explain.h): the map as an image, the shares per
 // cause in the stats and on one line.
-void Job::explain(const rt::Image& raster_image, bool write_map) {
-    const rt::ItemBuffer ids = raster().render_item_buffer(scene_->camera);
+void Job::explain(bool write_map) {
+    // The raster drawn again, with what each of its tricks added apart.
+    const rt::gl::RasterRenderer::ForExplain r = raster().render_for_explain(scene_->camera);
     rt::RenderOptions options;
     options.threads = o_.threads;
     options.trace = o_.trace;
     rt::Stopwatch watch;
-    const rt::ExplainMap map = rt::explain(*scene_, scene_->camera, options, raster_image, ids);
+    const rt::ExplainMap map =
+        rt::explain(*scene_, scene_->camera, options, r.image, r.ids, {}, &r.tricks);
     stats_["explain_seconds"] = watch.seconds();
     if (write_map) write(rt::explain_image(map), output_path(o_, "explain"), o_);
     const auto shares = rt::cause_shares(map);
@@ -281,13 +283,13 @@ int Job::run() {
         if (o_.mode == Mode::kRaster) {
             write(raster_image, main_output, o_);
         } else if (o_.mode == Mode::kExplain) {
-            explain(raster_image, true);
+            explain(true);
         } else {
             const rt::Image traced = trace();
             write(raster_image, output_path(o_, "raster"), o_);
             write(traced, output_path(o_, "trace"), o_);
             report_diff(raster_image, traced);
-            if (!o_.stats.empty()) explain(raster_image, false);
+            if (!o_.stats.empty()) explain(false);
         }
     }
     if (!o_.stats.empty()) write_stats();

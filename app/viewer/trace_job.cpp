@@ -136,8 +136,8 @@ bool TraceJob::explain_level(const TraceRequest& request, const rt::Camera& came
     if (raster.image.width != camera.cols || raster.image.height != camera.rows) return false;
     const rt::Stopwatch watch;
     auto explanation = std::make_shared<Explanation>();
-    explanation->map =
-        rt::explain(*request.scene, camera, request.options, raster.image, raster.ids, cancel);
+    explanation->map = rt::explain(*request.scene, camera, request.options, raster.image,
+                                   raster.ids, cancel, &raster.tricks);
     if (explanation->map.cancelled) return false;
     explanation->colours = rt::explain_colours(explanation->map);
     explanation->shares = rt::cause_shares(explanation->map);

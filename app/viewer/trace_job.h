@@ -25,6 +25,7 @@ namespace rt::viewer {
 struct RasterFrame {
     rt::Image image;
     rt::ItemBuffer ids;
+    rt::RasterTricks tricks;  // what shadow and environment maps added, when on
 };
 
 struct TraceRequest {

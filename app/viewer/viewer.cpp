@@ -228,9 +228,9 @@ void Viewer::raster_frames(TraceRequest& request) {
     for (int level : request.levels) {
         const rt::Camera camera = request.camera.resized(std::max(1, request.camera.cols / level),
                                                          std::max(1, request.camera.rows / level));
-        auto frame = std::make_shared<RasterFrame>();
-        frame->image = raster_->render(camera);
-        frame->ids = raster_->render_item_buffer(camera);
+        rt::gl::RasterRenderer::ForExplain r = raster_->render_for_explain(camera);
+        auto frame = std::make_shared<RasterFrame>(
+            RasterFrame{std::move(r.image), std::move(r.ids), std::move(r.tricks)});
         request.explain.push_back(std::move(frame));
     }
     raster_camera_.reset();  // the passes drew over the views' textures

@@ -366,6 +366,42 @@ TEST_P(Gl, AntiAliasingConvergesOnBothSides) {
     EXPECT_LT(rasterised[2], 0.8 * rasterised[0]);
 }
 
+// With the tricks on, the explain map compares like with like: the terms still add up to
+// traced - raster, and where both pipelines shadow a pixel its shadow term is about 0
+// (the feelers against the map), where the map fails it is not; on the mirror ball the
+// reflection term is the traced reflection against the environment map's, far smaller
+// than against nothing.
+TEST_P(Gl, ExplainSetsEachTrickAgainstItsTracedTerm) {
+    const Scene scene(load("whitted.json", 320, 240));
+    gl::RasterRenderer raster(scene);
+    raster.set_shadow_maps(true);
+    raster.set_environment_maps(true);
+    const gl::RasterRenderer::ForExplain r = raster.render_for_explain(scene.camera);
+    ASSERT_FALSE(r.tricks.shadow.pixels.empty());
+    ASSERT_FALSE(r.tricks.reflection.pixels.empty());
+    const ExplainMap like = explain(scene, scene.camera, {}, r.image, r.ids, {}, &r.tricks);
+    const ExplainMap whole = explain(scene, scene.camera, {}, r.image, r.ids);
+    const Image traced = render(scene, {});
+    std::size_t both_shadowed = 0, small_shadow_term = 0;
+    double reflection_like = 0.0, reflection_whole = 0.0;
+    for (std::size_t i = 0; i < traced.pixels.size(); ++i) {
+        const vec3 want = traced.pixels[i] - r.image.pixels[i], got = like.terms[i].sum();
+        for (int k = 0; k < 3; ++k) ASSERT_NEAR(got[k], want[k], 1e-4f) << "pixel " << i;
+        const float feelers = glm::length(whole.terms[i].shadow);  // the tracer's darkening
+        const float map = glm::length(r.tricks.shadow.pixels[i]);  // the map's
+        if (feelers > 0.1f && map > 0.1f && like.terms[i].reflection == vec3(0.0f) &&
+            like.terms[i].refraction == vec3(0.0f)) {
+            ++both_shadowed;
+            small_shadow_term += glm::length(like.terms[i].shadow) < 0.05f;
+        }
+        reflection_like += glm::length(like.terms[i].reflection);
+        reflection_whole += glm::length(whole.terms[i].reflection);
+    }
+    EXPECT_GT(both_shadowed, 500u);
+    EXPECT_GE(static_cast<double>(small_shadow_term), 0.9 * static_cast<double>(both_shadowed));
+    EXPECT_LT(reflection_like, 0.5 * reflection_whole);
+}
+
 // A camera skimming the floor, just above it or just under it (an orbit can take it
 // there): the floor is nearer than any object, and the raster must not clip it at the
 // near plane while the tracer draws it. With the near plane chosen from the objects alone,
