@@ -24,12 +24,6 @@ float largest(const vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), st
 
 constexpr float kNoneThreshold = 2.0f / 255.0f;  // compare_images' default threshold
 
-vec3 from_srgb8(int r, int g, int b) {
-    return {srgb_decode(static_cast<float>(r) / 255.0f),
-            srgb_decode(static_cast<float>(g) / 255.0f),
-            srgb_decode(static_cast<float>(b) / 255.0f)};
-}
-
 }  // namespace
 
 const vec3& ExplainTerms::operator[](Cause c) const {

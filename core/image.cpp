@@ -9,6 +9,12 @@ float srgb_encode(float linear) {
     return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
+vec3 from_srgb8(int r, int g, int b) {
+    return {srgb_decode(static_cast<float>(r) / 255.0f),
+            srgb_decode(static_cast<float>(g) / 255.0f),
+            srgb_decode(static_cast<float>(b) / 255.0f)};
+}
+
 float srgb_decode(float encoded) {
     const float c = std::clamp(encoded, 0.0f, 1.0f);
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);

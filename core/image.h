@@ -26,6 +26,8 @@ struct Image {
 // The sRGB transfer function (IEC 61966-2-1), on [0, 1]; values outside are clamped.
 float srgb_encode(float linear);
 float srgb_decode(float encoded);
+// A colour given as 8-bit sRGB (as palettes are written), in linear RGB.
+vec3 from_srgb8(int r, int g, int b);
 // 8-bit sRGB, top row first: what a PNG holds.
 std::vector<std::uint8_t> to_srgb8(const Image& image);
 

@@ -14,12 +14,6 @@ struct Vertex {
     glm::vec4 colour;
 };
 
-vec3 from_srgb8(int r, int g, int b) {
-    return {srgb_decode(static_cast<float>(r) / 255.0f),
-            srgb_decode(static_cast<float>(g) / 255.0f),
-            srgb_decode(static_cast<float>(b) / 255.0f)};
-}
-
 // Cuts the view-space segment a-b to the part in front of z = -near; false if none is.
 bool cut_at_near(glm::vec3& a, glm::vec3& b, float near_plane) {
     const float limit = -near_plane * 1.001f;

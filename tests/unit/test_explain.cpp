@@ -17,12 +17,6 @@
 namespace rt {
 namespace {
 
-SceneDescription shipped(const std::string& name, int w, int h) {
-    LoadedScene loaded = load_scene(test::scene_path(name));
-    loaded.scene.camera = loaded.scene.camera.resized(w, h);
-    return std::move(loaded.scene);
-}
-
 // What the raster's item buffer would hold if it rasterized exactly what the tracer sees.
 ItemBuffer traced_ids(const Scene& scene) {
     ItemBuffer ids(scene.camera.cols, scene.camera.rows);
@@ -49,7 +43,7 @@ const char* const kScenes[] = {"tutorial.json", "whitted.json", "cornell.json",
 // pixels are among them.
 TEST(Explain, TermsSumToTracedMinusRasterAtEveryPixel) {
     for (const char* name : kScenes) {
-        const Scene scene(shipped(name, 64, 48));
+        const Scene scene(test::shipped_scene(name, 64, 48));
         const Image raster = render(scene, local_only());
         ItemBuffer ids = traced_ids(scene);
         for (std::size_t i = 0; i < ids.object.size(); i += 7)
@@ -73,7 +67,7 @@ TEST(Explain, TermsSumToTracedMinusRasterAtEveryPixel) {
 // Tracing only what the raster does, every difference is geometry or shading.
 TEST(Explain, WithoutShadowsReflectionsAndRefractionsOnlyGeometryAndShadingRemain) {
     for (const char* name : kScenes) {
-        const Scene scene(shipped(name, 64, 48));
+        const Scene scene(test::shipped_scene(name, 64, 48));
         const Image grey(64, 48);  // black: a raster image unlike the traced one
         ItemBuffer ids = traced_ids(scene);
         for (std::size_t i = 0; i < ids.object.size(); i += 5) ids.object[i] = 0;
@@ -96,7 +90,7 @@ TEST(Explain, WithoutShadowsReflectionsAndRefractionsOnlyGeometryAndShadingRemai
 // tutorial's shadows are the only cause on its floor: where the feelers darken a pixel
 // visibly, the cause is shadow and the shadow term is that darkening.
 TEST(Explain, TheTutorialsShadowPixelsAreShadow) {
-    const Scene scene(shipped("tutorial.json", 160, 120));
+    const Scene scene(test::shipped_scene("tutorial.json", 160, 120));
     const Image raster = render(scene, local_only());
     RenderOptions no_secondary;
     no_secondary.trace.reflections = no_secondary.trace.refractions = false;
@@ -119,7 +113,7 @@ TEST(Explain, TheTutorialsShadowPixelsAreShadow) {
 // The shares: each column sums to 1, and the pixels with no cause are exactly those the
 // difference statistics count as not differing.
 TEST(Explain, SharesSumToOneAndNoneIsWhatCompareCallsEqual) {
-    const Scene scene(shipped("whitted.json", 80, 60));
+    const Scene scene(test::shipped_scene("whitted.json", 80, 60));
     const Image raster = render(scene, local_only());
     const ExplainMap map = explain(scene, scene.camera, {}, raster, traced_ids(scene));
     const auto shares = cause_shares(map);
@@ -158,7 +152,7 @@ TEST(Explain, ACauseIsTheLargestTerm) {
 
 // The picture: each cause in its colour, the legend strip below naming them all.
 TEST(Explain, TheImageColoursEachPixelByItsCause) {
-    const Scene scene(shipped("tutorial.json", 160, 120));
+    const Scene scene(test::shipped_scene("tutorial.json", 160, 120));
     const ExplainMap map =
         explain(scene, scene.camera, {}, render(scene, local_only()), traced_ids(scene));
     const Image colours = explain_colours(map);

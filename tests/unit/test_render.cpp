@@ -12,14 +12,8 @@
 namespace rt {
 namespace {
 
-SceneDescription load_small(const std::string& name, int w, int h) {
-    LoadedScene loaded = load_scene(test::scene_path(name));
-    loaded.scene.camera = loaded.scene.camera.resized(w, h);
-    return std::move(loaded.scene);
-}
-
 TEST(Render, SameBytesWhateverTheThreadCount) {
-    const Scene scene(load_small("whitted.json", 120, 90));
+    const Scene scene(test::shipped_scene("whitted.json", 120, 90));
     RenderOptions options;
     options.threads = 1;
     const Image one = render(scene, options);
@@ -41,7 +35,7 @@ static_assert(!std::is_assignable_v<decltype((std::declval<Scene&>().lights)), s
 static_assert(!std::is_assignable_v<decltype((std::declval<Scene&>().camera)), Camera>);
 
 TEST(Render, ADescriptionBuildsTheSamePictureWithAnyStructure) {
-    const Scene scene(load_small("cornell.json", 64, 64));
+    const Scene scene(test::shipped_scene("cornell.json", 64, 64));
     const Image bvh = render(scene, {});
     for (AccelKind kind : {AccelKind::kBrute, AccelKind::kGrid, AccelKind::kBvh2}) {
         const Scene again(scene.description(), kind);
@@ -52,7 +46,7 @@ TEST(Render, ADescriptionBuildsTheSamePictureWithAnyStructure) {
 }
 
 TEST(Render, ProgressCountsEveryTileOnce) {
-    const Scene scene(load_small("tutorial.json", 100, 50));
+    const Scene scene(test::shipped_scene("tutorial.json", 100, 50));
     RenderOptions options;
     options.tile_size = 16;  // 7 x 4 tiles
     int calls = 0, last = 0, total_seen = 0;
@@ -70,7 +64,7 @@ TEST(Render, ProgressCountsEveryTileOnce) {
 }
 
 TEST(Render, CancellationStopsTheWorkers) {
-    const Scene scene(load_small("whitted.json", 320, 240));
+    const Scene scene(test::shipped_scene("whitted.json", 320, 240));
     std::stop_source stop;
     RenderOptions options;
     options.tile_size = 8;
@@ -96,7 +90,7 @@ TEST(Render, EveryAssetSceneGivesASanePicture) {
          std::filesystem::directory_iterator(test::source_dir() / "assets/scenes")) {
         if (entry.path().extension() != ".json") continue;
         ++scenes;
-        const Scene scene(load_small(entry.path().filename().string(), 64, 48));
+        const Scene scene(test::shipped_scene(entry.path().filename().string(), 64, 48));
         RenderStats stats;
         const Image image = render(scene, {}, &stats);
         EXPECT_EQ(stats.nonfinite_pixels, 0u) << entry.path();
@@ -115,7 +109,7 @@ TEST(Render, EveryAssetSceneGivesASanePicture) {
 }
 
 TEST(Render, DefaultSceneShowsShadowsReflectionAndRefraction) {
-    const Scene scene(load_small("whitted.json", 160, 120));
+    const Scene scene(test::shipped_scene("whitted.json", 160, 120));
     RenderStats stats;
     render(scene, {}, &stats);
     EXPECT_GT(stats.rays.shadow, 0u);

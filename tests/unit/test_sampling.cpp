@@ -15,12 +15,6 @@
 namespace rt {
 namespace {
 
-SceneDescription whitted(int w, int h) {
-    LoadedScene loaded = load_scene(test::scene_path("whitted.json"));
-    loaded.scene.camera = loaded.scene.camera.resized(w, h);
-    return std::move(loaded.scene);
-}
-
 // Where a ray crosses the view plane, in pixel units (the inverse of Camera::ray_at).
 glm::vec2 on_grid(const Camera& c, const Ray& r) {
     const vec3 d = r.dir * (c.N / -glm::dot(r.dir, c.n));
@@ -67,7 +61,7 @@ TEST(Sampling, EachSampleLiesInItsOwnStratum) {
 // One sample per pixel is today's image bit for bit; any spp gives the same image on one
 // thread or three, and casts spp primary rays a pixel.
 TEST(Sampling, OneSampleIsThePixelCentreAndThreadsChangeNothing) {
-    const Scene scene(whitted(48, 36));
+    const Scene scene(test::shipped_scene("whitted.json", 48, 36));
     RenderOptions one;
     one.spp = 1;
     EXPECT_EQ(render(scene, one).pixels, render(scene, RenderOptions{}).pixels);
@@ -87,7 +81,7 @@ TEST(Sampling, OneSampleIsThePixelCentreAndThreadsChangeNothing) {
 // More samples, closer to the limit: against 256 samples per pixel, the error falls as
 // the count rises, and the mean brightness stays (a box filter neither adds nor loses light).
 TEST(Sampling, MoreSamplesConvergeAndKeepTheMean) {
-    const Scene scene(whitted(40, 30));
+    const Scene scene(test::shipped_scene("whitted.json", 40, 30));
     const auto at = [&](int spp) {
         RenderOptions o;
         o.spp = spp;

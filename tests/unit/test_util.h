@@ -8,12 +8,20 @@
 #include <utility>
 
 #include "core/scene.h"
+#include "core/scene_loader.h"
 
 namespace rt::test {
 
 inline std::filesystem::path source_dir() { return RTVIEW_SOURCE_DIR; }
 inline std::filesystem::path scene_path(const std::string& name) {
     return source_dir() / "assets/scenes" / name;
+}
+
+// A shipped scene (assets/scenes/NAME) at another resolution, as a description to build.
+inline SceneDescription shipped_scene(const std::string& name, int w, int h) {
+    LoadedScene loaded = load_scene(scene_path(name));
+    loaded.scene.camera = loaded.scene.camera.resized(w, h);
+    return std::move(loaded.scene);
 }
 
 // A fresh, empty temporary directory per test.
