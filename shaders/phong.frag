@@ -3,7 +3,15 @@
 //   I = ka Ia + sum_l (kd max(0, n.l) + ks max(0, r.v)^shininess) I_l
 // Same materials, lights, checker and normal rules as core/tracer.cpp and core/scene.cpp.
 
+// Compiled with SHADOW_MAPS and ENV_MAPS 0 or 1 (app/gl/program.h says why not uniforms).
+
 const int kMaxLights = 16;  // RasterRenderer::kMaxLights
+#ifndef SHADOW_MAPS
+#define SHADOW_MAPS 0
+#endif
+#ifndef ENV_MAPS
+#define ENV_MAPS 0
+#endif
 
 in vec3 v_local;
 in vec3 v_world;
@@ -26,7 +34,6 @@ uniform vec3 u_light_colour[kMaxLights];
 
 // Shadow maps (app/gl/cube_atlas.h): per light a row of six faces in one atlas, each
 // texel the distance from the light to the nearest surface.
-uniform int u_shadow_maps;  // 0: none, the classic pipeline
 uniform sampler2D u_shadow_atlas;
 uniform int u_shadow_size;  // texels a face side
 uniform int u_shadow_rows;  // lights with a row
@@ -34,7 +41,6 @@ uniform mat4 u_face_vp[6];  // direction from a cube's centre -> a face's clip s
 
 // Environment maps (app/gl/cube_atlas.h): per mirror or glass object a row of six faces,
 // the rest of the scene seen from its centre.
-uniform int u_env_on;
 uniform int u_env_terms;  // 1: reflection, 2: refraction, 3: both (the explain map asks for one)
 uniform int u_env_row;  // this object's row, or -1
 uniform sampler2D u_env_atlas;
@@ -167,15 +173,20 @@ void main() {
         to_light /= distance;
         float n_dot_l = dot(n, to_light);
         if (n_dot_l <= 0.0) continue;
-        float visible = u_shadow_maps == 1 && i < u_shadow_rows && u_light_directional[i] == 0
+#if SHADOW_MAPS == 1
+        float visible = i < u_shadow_rows && u_light_directional[i] == 0
                             ? shadow_visibility(i, s.world, n, to_light)
                             : 1.0;
+#else
+        float visible = 1.0;  // the classic pipeline: no shadows
+#endif
         if (visible <= 0.0) continue;
         float r_dot_v = max(0.0, dot(reflect(-to_light, n), to_viewer));
         vec3 specular = r_dot_v > 0.0 ? u_ks * pow(r_dot_v, u_shininess) : vec3(0.0);
         colour += visible * (u_kd * c * n_dot_l + specular) * u_light_colour[i];
     }
-    if (u_env_on == 1 && u_env_row >= 0) {
+#if ENV_MAPS == 1
+    if (u_env_row >= 0) {
         // The tracer's R = local + kr R_reflected + kt R_refracted, with the rays' colours
         // looked up instead of traced; the refraction bends once, at this surface.
         vec3 incoming = -to_viewer;
@@ -185,5 +196,6 @@ void main() {
             colour += u_kt * environment(dot(t, t) > 0.0 ? t : reflect(incoming, n));
         }
     }
+#endif
     o_colour = vec4(colour, 1.0);
 }

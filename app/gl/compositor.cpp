@@ -1,6 +1,7 @@
 #include "app/gl/compositor.h"
 
 #include <algorithm>
+#include <string>
 
 #include "app/gl/debug.h"
 #include "core/compare.h"
@@ -8,13 +9,14 @@
 namespace rt::gl {
 
 Compositor::Compositor(const std::filesystem::path& shaders)
-    : program_(shaders / "fullscreen.vert", shaders / "present.frag"),
+    : programs_(shaders / "fullscreen.vert", shaders / "present.frag"),
       vao_(make_vertex_array()) {  // the full-screen triangle comes from gl_VertexID
     std::vector<vec3> heat(256);
     for (std::size_t i = 0; i < heat.size(); ++i)
         heat[i] = heat_colour(static_cast<float>(i) / 255.0f);
     heat_map_.upload_row(heat);
     set_item_palette(1);
+    program(View::kSplit, DiffMode::kHeat, false);  // a shader that does not compile fails here
 }
 
 void Compositor::set_item_palette(std::size_t object_count) {
@@ -24,8 +26,16 @@ void Compositor::set_item_palette(std::size_t object_count) {
     palette_.upload_row(colours);
 }
 
+Program& Compositor::program(View view, DiffMode diff_mode, bool overlay) {
+    return programs_.get(
+        {"VIEW " + std::to_string(static_cast<int>(view)),
+         "DIFF_MODE " + std::to_string(view == View::kDiff ? static_cast<int>(diff_mode) : 0),
+         std::string("OVERLAY ") + (overlay ? "1" : "0")});
+}
+
 void Compositor::draw(const CompositeInputs& in, int width, int height) {
-    program_.use();
+    Program& program = this->program(in.view, in.diff_mode, in.overlay != 0);
+    program.use();
     const GLuint textures[] = {in.raster,     in.traced,  in.item_buffer, heat_map_.id(),
                                palette_.id(), in.explain, in.overlay};
     const char* names[] = {"u_raster",  "u_traced",  "u_ids",    "u_heat",
@@ -33,19 +43,16 @@ void Compositor::draw(const CompositeInputs& in, int width, int height) {
     for (int i = 0; i < 7; ++i) {
         glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(i));
         glBindTexture(GL_TEXTURE_2D, textures[i]);
-        program_.set(names[i], i);
+        program.set(names[i], i);
     }
     glActiveTexture(GL_TEXTURE0);
-    program_.set("u_view", static_cast<int>(in.view));
-    program_.set("u_viewport",
-                 glm::vec3(static_cast<float>(width), static_cast<float>(height), 0.0f));
-    program_.set("u_divider", in.divider);
-    program_.set("u_swap", in.swap ? 1 : 0);
-    program_.set("u_diff_scale", std::max(in.diff_scale, 1e-4f));
-    program_.set("u_diff_mode", static_cast<int>(in.diff_mode));
-    program_.set("u_diff_threshold", in.diff_threshold);
-    program_.set("u_palette_size", palette_.width());
-    program_.set("u_overlay_on", in.overlay != 0 ? 1 : 0);
+    program.set("u_viewport",
+                glm::vec3(static_cast<float>(width), static_cast<float>(height), 0.0f));
+    program.set("u_divider", in.divider);
+    program.set("u_swap", in.swap ? 1 : 0);
+    program.set("u_diff_scale", std::max(in.diff_scale, 1e-4f));
+    program.set("u_diff_threshold", in.diff_threshold);
+    program.set("u_palette_size", palette_.width());
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(vao_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);

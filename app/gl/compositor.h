@@ -42,9 +42,11 @@ class Compositor {
     void draw(const CompositeInputs& in, int width, int height);
     // The palette of item-buffer ids, from core's item_colour(), for `object_count` objects.
     void set_item_palette(std::size_t object_count);
+    // present.frag compiled for a view (compiled when first asked for).
+    Program& program(View view, DiffMode diff_mode, bool overlay);
 
   private:
-    Program program_;
+    ProgramVariants programs_;  // per view, difference mode and overlay
     Texture heat_map_;
     Texture palette_;
     VertexArrayHandle vao_;

@@ -1,5 +1,6 @@
 #include "app/gl/program.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -42,8 +43,27 @@ std::string info_log(GLuint object, bool is_program) {
                 first_line.empty() ? "the shader does not compile" : first_line);
 }
 
-ShaderHandle compile(GLenum stage, const std::filesystem::path& file) {
-    const std::string source = read_source(file);
+// The definitions go after the #version line, and #line puts the file's own line
+// numbers back for the compiler's messages.
+std::string with_defines(std::string source, const std::vector<std::string>& defines) {
+    if (defines.empty()) return source;
+    std::size_t at = 0;  // after the #version line, if there is one
+    int next_line = 1;
+    if (source.rfind("#version", 0) == 0) {
+        at = std::min(source.find('\n'), source.size());
+        source.insert(at, at == source.size() ? "\n" : "");
+        at += 1;
+        next_line = 2;
+    }
+    std::string lines;
+    for (const std::string& d : defines) lines += "#define " + d + "\n";
+    lines += "#line " + std::to_string(next_line) + "\n";
+    return source.insert(at, lines);
+}
+
+ShaderHandle compile(GLenum stage, const std::filesystem::path& file,
+                     const std::vector<std::string>& defines) {
+    const std::string source = with_defines(read_source(file), defines);
     ShaderHandle shader(glCreateShader(stage));
     const char* text = source.c_str();
     glShaderSource(shader.get(), 1, &text, nullptr);
@@ -62,9 +82,10 @@ std::filesystem::path shader_dir() {
 }
 
 Program::Program(const std::filesystem::path& vertex_file,
-                 const std::filesystem::path& fragment_file) {
-    const ShaderHandle vs = compile(GL_VERTEX_SHADER, vertex_file);
-    const ShaderHandle fs = compile(GL_FRAGMENT_SHADER, fragment_file);
+                 const std::filesystem::path& fragment_file,
+                 const std::vector<std::string>& defines) {
+    const ShaderHandle vs = compile(GL_VERTEX_SHADER, vertex_file, defines);
+    const ShaderHandle fs = compile(GL_FRAGMENT_SHADER, fragment_file, defines);
     id_ = ProgramHandle(glCreateProgram());
     glAttachShader(id_.get(), vs.get());
     glAttachShader(id_.get(), fs.get());
@@ -75,6 +96,13 @@ Program::Program(const std::filesystem::path& vertex_file,
         const std::string log = info_log(id_.get(), true);
         throw Error(fragment_file.string(), "link", log.substr(0, log.find('\n')));
     }
+}
+
+Program& ProgramVariants::get(const std::vector<std::string>& defines) {
+    auto it = programs_.find(defines);
+    if (it == programs_.end())
+        it = programs_.try_emplace(defines, vertex_, fragment_, defines).first;
+    return it->second;
 }
 
 GLint Program::location(const char* name) {

@@ -15,10 +15,17 @@ namespace rt::gl {
 RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& shaders)
     : scene_(scene),
       gpu_(scene),
-      phong_(shaders / "raster.vert", shaders / "phong.frag"),
+      phong_variants_(shaders / "raster.vert", shaders / "phong.frag"),
       ids_(shaders / "raster.vert", shaders / "itembuffer.frag"),
       wire_(shaders / "raster.vert", shaders / "wire.frag"),
-      shadow_(shaders / "raster.vert", shaders / "shadow.frag") {}
+      shadow_(shaders / "raster.vert", shaders / "shadow.frag") {
+    phong(false, false);  // a shader that does not compile fails here, not at the first frame
+}
+
+Program& RasterRenderer::phong(bool shadow_maps, bool environment_maps) {
+    return phong_variants_.get({std::string("SHADOW_MAPS ") + (shadow_maps ? "1" : "0"),
+                                std::string("ENV_MAPS ") + (environment_maps ? "1" : "0")});
+}
 
 void RasterRenderer::set_camera(Program& program, const Camera& camera) {
     const DepthRange depth = gpu_.depth_range(camera);
@@ -38,27 +45,27 @@ void RasterRenderer::set_object(Program& program, const DrawItem& item, const Ca
 }
 
 void RasterRenderer::set_material(const Material& m, const DrawItem& item) {
-    phong_.set("u_ka", m.ka);
-    phong_.set("u_kd", m.kd);
-    phong_.set("u_ks", m.ks);
-    phong_.set("u_shininess", m.shininess);
-    phong_.set("u_kr", m.reflectivity);
-    phong_.set("u_kt", m.transparency);
-    phong_.set("u_ior", m.ior);
-    phong_.set("u_checker", m.checker ? 1 : 0);
+    phong_->set("u_ka", m.ka);
+    phong_->set("u_kd", m.kd);
+    phong_->set("u_ks", m.ks);
+    phong_->set("u_shininess", m.shininess);
+    phong_->set("u_kr", m.reflectivity);
+    phong_->set("u_kt", m.transparency);
+    phong_->set("u_ior", m.ior);
+    phong_->set("u_checker", m.checker ? 1 : 0);
     if (m.checker) {
-        phong_.set("u_checker_a", m.checker->colour_a);
-        phong_.set("u_checker_b", m.checker->colour_b);
-        phong_.set("u_checker_scale", m.checker->scale);
+        phong_->set("u_checker_a", m.checker->colour_a);
+        phong_->set("u_checker_b", m.checker->colour_b);
+        phong_->set("u_checker_scale", m.checker->scale);
     }
-    phong_.set("u_plane", item.plane ? 1 : 0);
-    phong_.set("u_pattern_shift", scene_.pattern_shift(item.object_id - 1, item.material));
-    phong_.set("u_sphere", item.sphere ? 1 : 0);
+    phong_->set("u_plane", item.plane ? 1 : 0);
+    phong_->set("u_pattern_shift", scene_.pattern_shift(item.object_id - 1, item.material));
+    phong_->set("u_sphere", item.sphere ? 1 : 0);
     if (item.plane) {
         glm::vec3 t1, t2;
         tangent_frame(item.plane->normal, t1, t2);
-        phong_.set("u_plane_t1", t1);
-        phong_.set("u_plane_t2", t2);
+        phong_->set("u_plane_t1", t1);
+        phong_->set("u_plane_t2", t2);
     }
 }
 
@@ -71,19 +78,20 @@ void RasterRenderer::draw(const Camera& camera) {
 // Phong over every object but `skip` (an object index, or -1), mirrors and glass looking
 // up `env` when given.
 void RasterRenderer::draw_scene(const Camera& camera, int skip, const CubeAtlas* env) {
-    set_camera(phong_, camera);
+    phong_ = &phong(shadow_maps_ && shadows_, env != nullptr);
+    set_camera(*phong_, camera);
     set_shadow_uniforms();
     set_environment_uniforms(env);
-    phong_.set("u_ambient", scene_.ambient);
+    phong_->set("u_ambient", scene_.ambient);
     const int lights = std::min(static_cast<int>(scene_.lights.size()), kMaxLights);
-    phong_.set("u_light_count", lights);
+    phong_->set("u_light_count", lights);
     for (int i = 0; i < lights; ++i) {
         const Light& l = scene_.lights[static_cast<std::size_t>(i)];
         const std::string at = "[" + std::to_string(i) + "]";
         const bool directional = l.type == Light::Type::kDirectional;
-        phong_.set(("u_light_directional" + at).c_str(), directional ? 1 : 0);
-        phong_.set(("u_light_vector" + at).c_str(), directional ? l.direction : l.position);
-        phong_.set(("u_light_colour" + at).c_str(), l.colour);
+        phong_->set(("u_light_directional" + at).c_str(), directional ? 1 : 0);
+        phong_->set(("u_light_vector" + at).c_str(), directional ? l.direction : l.position);
+        phong_->set(("u_light_colour" + at).c_str(), l.colour);
     }
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -101,10 +109,10 @@ void RasterRenderer::draw_scene(const Camera& camera, int skip, const CubeAtlas*
     for (const auto& [d, i] : order) {
         const DrawItem& item = items[i];
         if (item.wire || static_cast<int>(item.object_id) - 1 == skip) continue;
-        set_object(phong_, item, camera);
+        set_object(*phong_, item, camera);
         set_material(scene_.materials[item.material], item);
         const std::size_t object = item.object_id - 1;
-        phong_.set("u_env_row", env && object < env_row_.size() ? env_row_[object] : -1);
+        phong_->set("u_env_row", env && object < env_row_.size() ? env_row_[object] : -1);
         item.mesh->draw(item.first_vertex, item.vertex_count);
     }
     draw_wires(items, camera);

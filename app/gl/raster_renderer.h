@@ -65,6 +65,9 @@ class RasterRenderer {
     // The near and far planes these passes use for `camera`.
     DepthRange depth_range(const Camera& camera) const { return gpu_.depth_range(camera); }
 
+    // phong.frag compiled with or without each trick (compiled when first asked for).
+    Program& phong(bool shadow_maps, bool environment_maps);
+
   private:
     void set_camera(Program& program, const Camera& camera);
     void draw_wires(const std::vector<DrawItem>& items, const Camera& camera);
@@ -80,7 +83,8 @@ class RasterRenderer {
 
     const Scene& scene_;
     GpuScene gpu_;
-    Program phong_;
+    ProgramVariants phong_variants_;  // with and without each trick (phong.frag)
+    Program* phong_ = nullptr;        // the variant draw_scene() is drawing with
     Program ids_;
     Program wire_;
     Program shadow_;

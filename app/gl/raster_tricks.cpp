@@ -75,14 +75,13 @@ void RasterRenderer::ensure_shadow_maps() {
 
 void RasterRenderer::set_shadow_uniforms() {
     const bool on = shadow_maps_ && shadows_.has_value();
-    phong_.set("u_shadow_maps", on ? 1 : 0);
     if (!on) return;
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, shadows_->texture());
-    phong_.set("u_shadow_atlas", 0);
-    phong_.set("u_shadow_size", shadows_->size());
-    phong_.set("u_shadow_rows", shadows_->rows());
-    set_faces(phong_, "u_face_vp", *shadows_);
+    phong_->set("u_shadow_atlas", 0);
+    phong_->set("u_shadow_size", shadows_->size());
+    phong_->set("u_shadow_rows", shadows_->rows());
+    set_faces(*phong_, "u_face_vp", *shadows_);
 }
 
 void RasterRenderer::set_environment_maps(bool on, int size) {
@@ -181,16 +180,15 @@ RasterRenderer::ForExplain RasterRenderer::render_for_explain(const Camera& came
 }
 
 void RasterRenderer::set_environment_uniforms(const CubeAtlas* env) {
-    phong_.set("u_env_on", env ? 1 : 0);
-    phong_.set("u_env_terms", env_terms_);
     if (!env) return;
+    phong_->set("u_env_terms", env_terms_);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, env->texture());
     glActiveTexture(GL_TEXTURE0);
-    phong_.set("u_env_atlas", 1);
-    phong_.set("u_env_size", env->size());
-    phong_.set("u_env_rows", env->rows());
-    set_faces(phong_, "u_face_vp", *env);
+    phong_->set("u_env_atlas", 1);
+    phong_->set("u_env_size", env->size());
+    phong_->set("u_env_rows", env->rows());
+    set_faces(*phong_, "u_face_vp", *env);
 }
 
 }  // namespace rt::gl

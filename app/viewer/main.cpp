@@ -1,5 +1,6 @@
 // rtview: the interactive viewer.
 //   rtview [SCENE] [--size WxH] [--view raster|trace|split|diff|itembuffer|why] [--spp N]
+//          [--msaa N] [--raster-shadows none|map] [--raster-reflections none|envmap]
 //          [--save-dir DIR]
 //          [--accel bvh|bvh2|grid|brute] [--benchmark]
 
@@ -31,6 +32,17 @@ int main(int argc, char** argv) {
                    "Samples per pixel the traced view refines to once at full resolution: "
                    "1 (no anti-aliasing), 4, 16 (default) or 64")
         ->check(CLI::IsMember({1, 4, 16, 64}));
+    app.add_option("--msaa", options.msaa,
+                   "Raster multisample anti-aliasing at the start: 1 (none, default), 2, 4 or 8")
+        ->check(CLI::IsMember({1, 2, 4, 8}));
+    std::string raster_shadows = "none", raster_reflections = "none";
+    app.add_option("--raster-shadows", raster_shadows,
+                   "Raster shadows at the start: none (default) or map (shadow maps)")
+        ->check(CLI::IsMember({"none", "map"}));
+    app.add_option("--raster-reflections", raster_reflections,
+                   "Raster mirrors and glass at the start: none (default) or envmap "
+                   "(environment maps)")
+        ->check(CLI::IsMember({"none", "envmap"}));
     app.add_option("--up", options.up, "A bare mesh's up axis: y (default), z, x, -y, -z or -x")
         ->check(CLI::IsMember(
             std::vector<std::string>(std::begin(rt::kUpAxes), std::end(rt::kUpAxes))));
@@ -58,6 +70,8 @@ int main(int argc, char** argv) {
         return 1;
     }
     options.save_dir = save_dir;
+    options.shadow_maps = raster_shadows == "map";
+    options.environment_maps = raster_reflections == "envmap";
     try {
         rt::viewer::Viewer viewer(options);
         if (!benchmark) return viewer.run();

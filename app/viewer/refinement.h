@@ -3,7 +3,9 @@
 // Any change of what the traced image depends on (a TraceKey) restarts it at once at the
 // coarsest level, so the view follows the camera; once nothing has changed for
 // kRestSeconds, the chain up to full resolution follows. The first image, and the first
-// after reset() (a new scene), goes through every level at once.
+// after reset() (a new scene), goes through every level at once. While no traced image
+// is on screen (the raster view), changes are not followed: the tracer would only take
+// cores from the rasteriser; the chain comes once the camera rests.
 
 #include <cstdint>
 #include <optional>
@@ -33,14 +35,16 @@ class RefinementSchedule {
     static constexpr int kCoarsest = 8;          // a fraction of the full resolution per side
 
     // The levels to trace now (divisors of the full resolution, coarsest first: {8},
-    // {4, 2, 1} or {8, 4, 2, 1}), or none. `now` is in seconds on any steady clock.
-    std::vector<int> update(const TraceKey& key, double now);
+    // {4, 2, 1} or {8, 4, 2, 1}), or none. `now` is in seconds on any steady clock;
+    // `on_screen`: whether the view shows a traced image.
+    std::vector<int> update(const TraceKey& key, double now, bool on_screen = true);
     // Forget what was traced: the next update starts the full chain.
     void reset() { submitted_.reset(); }
 
   private:
     std::optional<TraceKey> submitted_;
     bool refine_pending_ = false;
+    bool followed_ = false;  // the coarsest level of the pending change was traced
     double last_change_ = 0.0;
 };
 
@@ -59,6 +63,8 @@ class ShownTrace {
         }
     }
     bool stale(const TraceKey& now) const { return !shown_ || !(*shown_ == now); }
+    // The last request submitted is of `key`.
+    bool asked_for(const TraceKey& key) const { return submitted_ && submitted_->second == key; }
     int level() const { return level_; }  // 0: nothing traced on screen yet
     // Full resolution, of the current camera and settings.
     bool complete(const TraceKey& now) const { return level_ == 1 && !stale(now); }

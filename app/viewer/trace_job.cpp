@@ -35,6 +35,12 @@ void TraceJob::cancel() {
     idle_.wait(lock, [&] { return !busy_.load(); });
 }
 
+void TraceJob::stop() {
+    std::lock_guard lock(mutex_);
+    pending_.reset();
+    running_.request_stop();
+}
+
 std::optional<TraceResult> TraceJob::take() {
     std::lock_guard lock(mutex_);
     std::optional<TraceResult> out = std::move(result_);

@@ -72,6 +72,8 @@ class TraceJob {
     void submit(TraceRequest request);
     // Stops the running request and waits until the worker holds no scene.
     void cancel();
+    // Stops the running request and returns at once.
+    void stop();
     // The newest result not yet taken, always of the newest request: a submit drops any
     // result of an older one, taken or not yet published.
     std::optional<TraceResult> take();

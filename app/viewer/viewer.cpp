@@ -88,6 +88,13 @@ Viewer::Viewer(const ViewerOptions& options)
     rays_ = std::make_unique<rt::gl::RayOverlay>();
     settings_.max_spp = options.spp;
     glGetIntegerv(GL_MAX_SAMPLES, &max_msaa_);
+    if (options.msaa > max_msaa_)
+        throw rt::Error("rtview", "--msaa",
+                        std::to_string(options.msaa) + " samples: this OpenGL offers at most " +
+                            std::to_string(max_msaa_));
+    settings_.msaa = options.msaa;
+    settings_.shadow_maps = options.shadow_maps;
+    settings_.environment_maps = options.environment_maps;
     std::printf("OpenGL: %s\n", window_.description().c_str());
     install(std::move(first_scene_), options.scene);
 }
@@ -188,7 +195,11 @@ void Viewer::update_trace() {
         if (shown_.stale(parts)) explain_ = false;  // something else changed: trace plainly
     }
     const TraceKey key = trace_key();
-    std::vector<int> levels = schedule_.update(key, clock_.seconds());
+    const View view = shown_view();
+    const bool on_screen = display_.flicker || (view != View::kRaster && view != View::kItemBuffer);
+    // Off screen, what the tracer is doing for an older camera only slows the raster down.
+    if (!on_screen && !shown_.asked_for(key)) tracer_.stop();
+    std::vector<int> levels = schedule_.update(key, clock_.seconds(), on_screen);
     if (levels.empty()) return;
     log_trace_settings(key);
     TraceRequest request;

@@ -41,6 +41,9 @@ struct ViewerOptions {
     rt::AccelKind accel = rt::AccelKind::kBvh;
     std::string up = "y";  // a bare mesh's up axis (rt::LoadOptions); the panel can change it
     int spp = 16;          // samples per pixel the traced view refines to (1: no anti-aliasing)
+    int msaa = 1;          // the raster's tricks at the start (the panel switches them)
+    bool shadow_maps = false;
+    bool environment_maps = false;
 };
 
 struct Settings {

@@ -52,8 +52,9 @@ bool Viewer::frames_until_traced(std::vector<double>& frames) {
 
 int Viewer::benchmark(const std::vector<std::string>& scenes) {
     const glm::ivec2 fb = window_.framebuffer_size();
-    std::printf("rtview benchmark: %dx%d, view %s, UI thread frame times in ms (median)\n", fb.x,
-                fb.y, view_label(display_.view));
+    std::printf(
+        "rtview benchmark: %dx%d, view %s, raster %s, UI thread frame times in ms (median)\n", fb.x,
+        fb.y, view_label(display_.view), raster_label().c_str());
     std::printf("%-22s %9s %7s %9s %9s %9s %9s %14s\n", "scene", "tracing", "frames", "at rest",
                 "hovering", "orbiting", "(raster)", "release->full");
     int status = 0;

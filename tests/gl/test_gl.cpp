@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "../unit/test_util.h"
+#include "app/gl/compositor.h"
 #include "app/gl/context.h"
 #include "app/gl/debug.h"
 #include "app/gl/framebuffer.h"
@@ -480,7 +481,7 @@ TEST_P(Gl, ItemBufferImagesAgreeWithFullTraversal) {
 TEST_P(Gl, BrokenShaderIsALocatedError) {
     const auto dir = test::temp_dir(std::string("shaders_") +
                                     (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
-    for (const char* f : {"raster.vert", "itembuffer.frag"})
+    for (const char* f : {"raster.vert", "itembuffer.frag", "wire.frag", "shadow.frag"})
         std::filesystem::copy_file(gl::shader_dir() / f, dir / f);
     test::write_file(dir / "phong.frag",
                      "#version 330 core\nout vec4 c;\nvoid main() {\n  c = vec4(1.0) +;\n}\n");
@@ -494,6 +495,38 @@ TEST_P(Gl, BrokenShaderIsALocatedError) {
     }
     std::filesystem::remove(dir / "phong.frag");
     EXPECT_THROW(gl::RasterRenderer(scene, dir), Error);  // missing
+}
+
+// Shaders are compiled once per feature set (app/gl/program.h): every set compiles, and
+// a set's error is reported at the file's own line, as it is without definitions.
+TEST_P(Gl, EveryShaderVariantCompilesAndErrorsKeepTheirLines) {
+    const Scene scene(load("tutorial.json", 32, 32));
+    gl::RasterRenderer raster(scene);
+    for (bool shadows : {false, true})
+        for (bool env : {false, true}) EXPECT_NO_THROW(raster.phong(shadows, env));
+    gl::Compositor compositor;
+    using gl::DiffMode;
+    using gl::View;
+    for (View v :
+         {View::kRaster, View::kTrace, View::kSplit, View::kDiff, View::kItemBuffer, View::kWhy})
+        for (DiffMode m : {DiffMode::kHeat, DiffMode::kSigned, DiffMode::kChannels})
+            for (bool overlay : {false, true}) EXPECT_NO_THROW(compositor.program(v, m, overlay));
+
+    const auto dir = test::temp_dir(std::string("variants_") +
+                                    (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
+    for (const char* f : {"raster.vert", "itembuffer.frag", "wire.frag", "shadow.frag"})
+        std::filesystem::copy_file(gl::shader_dir() / f, dir / f);
+    test::write_file(dir / "phong.frag",
+                     "#version 330 core\nout vec4 c;\nvoid main() {\n#if SHADOW_MAPS == 1\n"
+                     "  c = vec4(1.0) +;\n#else\n  c = vec4(1.0);\n#endif\n}\n");
+    gl::RasterRenderer broken(scene, dir);  // without shadow maps it compiles
+    try {
+        broken.phong(true, false);
+        FAIL() << "compiled";
+    } catch (const Error& e) {
+        EXPECT_NE(e.file().find("phong.frag"), std::string::npos) << e.what();
+        EXPECT_EQ(e.where(), "line 5") << e.what();
+    }
 }
 
 // GL names are held by self-deleting handles (app/gl/handle.h): constructions that throw

@@ -215,7 +215,8 @@ splits=$(log_count "^view: split")
 key 3
 wait_for_log "^view: split" $((splits + 1)) 5
 check "Tab then 3 with the panel focused: the view changes" test "$(log_count "^view: split")" -gt "$splits"
-after "^view: raster" key 1
+# The traced view: it follows each change at once (the raster view waits for a rest).
+after "^view: traced" key 2
 
 # A value typed into a slider (Ctrl+click, type, Enter) is clamped to the slider's range.
 xdotool mousemove --window "$wid" $MAX_DEPTH keydown ctrl click 1 keyup ctrl

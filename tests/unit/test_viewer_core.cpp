@@ -275,6 +275,27 @@ TEST(RefinementSchedule, CoarseWhileChangingFullOnceAtRest) {
     EXPECT_EQ(s.update(key, 7.1), (V{8, 4, 2, 1}));
 }
 
+// With no traced image on screen (the raster view) changes are not followed coarsely,
+// and the whole chain comes once the camera rests; a traced view shown again during the
+// rest follows at once.
+TEST(RefinementSchedule, OffScreenWaitsForRest) {
+    using V = std::vector<int>;
+    RefinementSchedule s;
+    TraceKey key;
+    EXPECT_EQ(s.update(key, 0.0, false), (V{8, 4, 2, 1}));  // the first image
+    key.camera_version = 1;
+    EXPECT_EQ(s.update(key, 1.0, false), V{});
+    key.camera_version = 2;
+    EXPECT_EQ(s.update(key, 1.1, false), V{});
+    EXPECT_EQ(s.update(key, 1.11 + RefinementSchedule::kRestSeconds, false), (V{8, 4, 2, 1}));
+    EXPECT_EQ(s.update(key, 5.0, false), V{});
+    key.camera_version = 3;
+    EXPECT_EQ(s.update(key, 6.0, false), V{});
+    EXPECT_EQ(s.update(key, 6.05, true), V{8});  // the traced view again, before the rest
+    EXPECT_EQ(s.update(key, 6.1, true), V{});
+    EXPECT_EQ(s.update(key, 6.01 + RefinementSchedule::kRestSeconds, true), (V{4, 2, 1}));
+}
+
 // A folder of three scenes (and a file that is not one), made for the test.
 std::filesystem::path scene_folder(const char* name) {
     const auto dir = std::filesystem::temp_directory_path() / name;
