@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ ninja-build git
+  dpkg-dev file                       # cpack -G DEB: dpkg-shlibdeps finds the package's dependencies
   libglm-dev                          # vector maths
   libopenimageio-dev openimageio-tools  # image files and comparison (idiff)
   nlohmann-json3-dev                  # scene files

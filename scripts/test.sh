@@ -3,11 +3,24 @@
 # (EGL and OSMesa), screenshot, command-line and GUI (Xvfb) tests. Then the headless
 # configuration (no GLFW, no X11, no viewer) is built and its tests run too, then the
 # suite under AddressSanitizer/UBSan and ThreadSanitizer, then each fuzzer for 30 s.
+#   scripts/test.sh [--quick]
+# --quick: the build and its unit, GL, screenshot and command-line tests only (a couple
+# of minutes), for the edit-build-test loop. CI runs the whole suite.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+quick=0
+case "${1:-}" in
+  --quick) quick=1 ;;
+  "") ;;
+  *) echo "usage: scripts/test.sh [--quick]" >&2; exit 2 ;;
+esac
 scripts/setup.sh
 scripts/build.sh -DRTVIEW_WERROR=ON
 status=0
+if [ $quick -eq 1 ]; then
+  ctest --test-dir build --output-on-failure -j "$(nproc)" -L "unit|gl|golden|cli" || status=$?
+  exit $status
+fi
 ctest --test-dir build --output-on-failure -j "$(nproc)" || status=$?
 [ -f build/golden_report/index.html ] && echo "screenshot report: build/golden_report/index.html"
 

@@ -76,11 +76,6 @@ ShaderHandle compile(GLenum stage, const std::filesystem::path& file,
 
 }  // namespace
 
-std::filesystem::path shader_dir() {
-    if (const char* env = std::getenv("RTVIEW_SHADER_DIR"); env && *env) return env;
-    return RTVIEW_SHADER_DIR;
-}
-
 Program::Program(const std::filesystem::path& vertex_file,
                  const std::filesystem::path& fragment_file,
                  const std::vector<std::string>& defines) {

@@ -17,14 +17,14 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "app/common/data_dir.h"
 #include "app/gl/gl.h"
 #include "app/gl/handle.h"
 
 namespace rt::gl {
 
-// Where shaders are read from: $RTVIEW_SHADER_DIR if set, else the source tree's
-// shaders/ as baked in at build time.
-std::filesystem::path shader_dir();
+// Where shaders are read from (app/common/data_dir.h).
+using rt::app::shader_dir;
 
 class Program {
   public:

@@ -18,7 +18,7 @@
 
 int main(int argc, char** argv) {
     rt::viewer::ViewerOptions options;
-    options.scene = std::string(RTVIEW_ASSET_DIR) + "/scenes/whitted.json";
+    options.scene = (rt::viewer::scenes_dir() / "whitted.json").string();
     std::string size, save_dir = ".";
     options.view = rt::gl::View::kSplit;
     CLI::App app{"rtview: one scene, rasterised by OpenGL and ray traced, side by side"};
@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
             scenes.push_back(options.scene);
         } else {
             for (const auto& p :
-                 rt::viewer::SceneSwitcher(rt::viewer::scenes_dir(RTVIEW_ASSET_DIR)).scenes())
+                 rt::viewer::SceneSwitcher(rt::viewer::scenes_dir()).scenes())
                 scenes.push_back(p.string());
         }
         return viewer.benchmark(scenes);

@@ -1,5 +1,7 @@
 #include "app/viewer/scene_switcher.h"
 
+#include "app/common/data_dir.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <system_error>
@@ -49,10 +51,6 @@ void SceneSwitcher::shown(const std::string& path) {
     if (asked_ == path) asked_.clear();
 }
 
-std::filesystem::path scenes_dir(const std::filesystem::path& built_in) {
-    if (const char* env = std::getenv("RTVIEW_ASSET_DIR"); env && *env)
-        return std::filesystem::path(env) / "scenes";
-    return built_in / "scenes";
-}
+std::filesystem::path scenes_dir() { return rt::app::asset_dir() / "scenes"; }
 
 }  // namespace rt::viewer

@@ -38,7 +38,7 @@ class SceneSwitcher {
     std::optional<std::string> pending_;  // asked for, not yet taken
 };
 
-// The scenes folder: $RTVIEW_ASSET_DIR/scenes when that is set, else `built_in`/scenes.
-std::filesystem::path scenes_dir(const std::filesystem::path& built_in);
+// The shipped scenes' folder: scenes/ in the assets (app/common/data_dir.h).
+std::filesystem::path scenes_dir();
 
 }  // namespace rt::viewer

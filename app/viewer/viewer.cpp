@@ -57,7 +57,7 @@ Viewer::Viewer(const ViewerOptions& options)
       first_scene_(read_scene(options.scene, options.accel,
                               options.up)),  // a bad file fails before any window opens
       window_(options.width, options.height, "rtview"),
-      scenes_(scenes_dir(RTVIEW_ASSET_DIR)),
+      scenes_(scenes_dir()),
       tracer_([] { glfwPostEmptyEvent(); }),
       display_{.view = options.view} {
     GLFWwindow* w = window_.handle();
