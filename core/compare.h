@@ -13,7 +13,7 @@ namespace rt {
 struct ImageDiff {
     double mean_abs_error = 0.0;  // over all channels of all pixels
     double rms = 0.0;
-    double psnr_db = 0.0;     // infinite when identical (rms 0): print identical() instead
+    double psnr_db = 0.0;  // infinite when identical (rms 0): print identical() instead
     bool identical() const { return rms == 0.0; }
     double max_error = 0.0;   // the largest channel difference
     double share_over = 0.0;  // share of pixels with a channel differing by more than `threshold`

@@ -50,10 +50,10 @@ class JsonValue {
     int integer_between(int lo, int hi) const;
     bool boolean() const;
     std::string string() const;
-    vec3 vector3() const;  // [x, y, z]
+    vec3 vector3() const;          // [x, y, z]
     double number_double() const;  // as number(), without the rounding to float
     glm::dvec3 dvector3() const;   // as vector3(), without the rounding to float
-    vec3 colour() const;   // [r, g, b] or one grey number, each >= 0
+    vec3 colour() const;           // [r, g, b] or one grey number, each >= 0
 
     bool is_array() const { return json_->is_array(); }
     bool is_object() const { return json_->is_object(); }

@@ -44,7 +44,8 @@ struct Material {
     float shininess = 32.0f;  // Phong exponent
     float reflectivity = 0.0f;
     float transparency = 0.0f;
-    float ior = 1.5f;  // index of refraction (outside is air, 1.0)
+    float ior = 1.5f;     // index of refraction (outside is air, 1.0)
+    vec3 emission{0.0f};  // added as it is, lit or not (glTF's emissive)
     std::optional<Checker> checker;
 };
 

@@ -42,14 +42,16 @@ void add_warnings(const std::string& file, const std::string& text, std::vector<
 }
 
 // The centre of the box around the vertices that faces, lines and points use, in double.
-glm::dvec3 used_centre(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes) {
+glm::dvec3 used_centre(const tinyobj::attrib_t& attrib,
+                       const std::vector<tinyobj::shape_t>& shapes) {
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
     const auto vertex_count = static_cast<int>(attrib.vertices.size() / 3);
     for (const tinyobj::shape_t& shape : shapes)
         for (const auto* list : {&shape.mesh.indices, &shape.lines.indices, &shape.points.indices})
             for (const tinyobj::index_t& corner : *list) {
                 if (corner.vertex_index < 0 || corner.vertex_index >= vertex_count) continue;
-                const double* v = &attrib.vertices[3 * static_cast<std::size_t>(corner.vertex_index)];
+                const double* v =
+                    &attrib.vertices[3 * static_cast<std::size_t>(corner.vertex_index)];
                 lo = glm::min(lo, glm::dvec3(v[0], v[1], v[2]));
                 hi = glm::max(hi, glm::dvec3(v[0], v[1], v[2]));
             }
@@ -102,7 +104,7 @@ bool copy_triangles(const std::string& file, const tinyobj::attrib_t& attrib,
             mesh.triangles.push_back(tri);
             const int material = shape.mesh.material_ids.empty() ? -1 : shape.mesh.material_ids[f];
             mesh.materials.push_back(material >= 0 ? static_cast<std::uint32_t>(material)
-                                                   : kNoObjMaterial);
+                                                   : kNoFileMaterial);
         }
     }
     if (all_normals) {
@@ -186,7 +188,8 @@ ObjCounts check_obj_lines(const std::string& file, std::string_view text) {
                 double value = 0.0;
                 const auto [end, ec] =
                     std::from_chars(token.data(), token.data() + token.size(), value);
-                if (ec != std::errc{} || end != token.data() + token.size() || !std::isfinite(value))
+                if (ec != std::errc{} || end != token.data() + token.size() ||
+                    !std::isfinite(value))
                     fail("vertex coordinate \"" + token + "\" is not a finite number");
             }
         } else if (is_element(line, 'f')) {
@@ -223,8 +226,7 @@ class MtlReader : public tinyobj::MaterialReader {
     MtlReader(std::filesystem::path dir, std::string obj_file)
         : dir_(std::move(dir)), obj_file_(std::move(obj_file)) {}
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
-                    std::map<std::string, int>* names, std::string* warn,
-                    std::string*) override {
+                    std::map<std::string, int>* names, std::string* warn, std::string*) override {
         const std::filesystem::path path = dir_ / name;
         std::error_code ec;
         std::ifstream in;
@@ -246,7 +248,7 @@ class MtlReader : public tinyobj::MaterialReader {
 
 }  // namespace
 
-ObjData load_obj(const std::filesystem::path& path, const ObjOptions& options) {
+MeshFile load_obj(const std::filesystem::path& path, const MeshFileOptions& options) {
     const std::string file = path.string();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
@@ -269,7 +271,7 @@ ObjData load_obj(const std::filesystem::path& path, const ObjOptions& options) {
         }
     }
 
-    ObjData data;
+    MeshFile data;
     data.mesh.name = path.filename().string();
     add_warnings(file, warn, data.warnings);
     for (const auto& m : materials) data.materials.push_back(from_mtl(m));

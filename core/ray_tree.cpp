@@ -32,8 +32,9 @@ std::vector<RaySegment> ray_segments(const RayNode& root, const std::vector<Ligh
         const vec3 unit = length > 0.0f ? n.direction / length : vec3(0.0f);
         if (n.kind == RayKind::kShadow) {
             // A point light's feeler is l - p: it ends at the light (t = 1).
-            const bool point = n.light >= 0 && static_cast<std::size_t>(n.light) < lights.size() &&
-                               lights[static_cast<std::size_t>(n.light)].type == Light::Type::kPoint;
+            const bool point =
+                n.light >= 0 && static_cast<std::size_t>(n.light) < lights.size() &&
+                lights[static_cast<std::size_t>(n.light)].type == Light::Type::kPoint;
             s.b = point ? n.origin + n.direction : n.origin + miss_length * unit;
         } else if (n.hit) {
             s.b = n.hit->point;

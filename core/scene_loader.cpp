@@ -7,7 +7,9 @@
 
 #include "core/error.h"
 #include "core/file_kind.h"
+#include "core/gltf_loader.h"
 #include "core/json_reader.h"
+#include "core/mesh_file.h"
 #include "core/obj_loader.h"
 
 namespace rt {
@@ -162,7 +164,8 @@ void JsonSceneReader::read_materials(const std::optional<JsonValue>& j) {
 }
 
 Material JsonSceneReader::read_material(const JsonValue& j, Material m) const {
-    j.keys({"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "checker"});
+    j.keys({"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "emission",
+            "checker"});
     if (const auto v = j.find("ka")) m.ka = v->colour();
     if (const auto v = j.find("kd")) m.kd = v->colour();
     if (const auto v = j.find("ks")) m.ks = v->colour();
@@ -170,6 +173,7 @@ Material JsonSceneReader::read_material(const JsonValue& j, Material m) const {
     if (const auto v = j.find("reflectivity")) m.reflectivity = v->number_between(0.0f, 1.0f);
     if (const auto v = j.find("transparency")) m.transparency = v->number_between(0.0f, 1.0f);
     if (const auto v = j.find("ior")) m.ior = v->number_above(0.0f);
+    if (const auto v = j.find("emission")) m.emission = v->colour();
     if (const auto c = j.find("checker")) {
         c->keys({"colors", "scale"});
         const auto colours = (*c)["colors"].elements(2, 2);
@@ -305,9 +309,9 @@ std::uint32_t JsonSceneReader::load_mesh(const JsonValue& file_value, bool in_wo
     std::error_code ec;
     if (!std::filesystem::is_regular_file(mesh_path, ec))
         file_value.fail("cannot open mesh file \"" + mesh_path.string() + "\"");
-    ObjOptions options;
+    MeshFileOptions options;
     if (key.second) options.origin = origin_;
-    ObjData obj = load_obj(mesh_path, options);
+    MeshFile obj = load_mesh_file(mesh_path, options);
     const auto first_material = static_cast<std::uint32_t>(scene_.materials.size());
     for (Material& m : obj.materials) {
         m.name = mesh_path.filename().string() + ":" + m.name;
@@ -391,28 +395,58 @@ glm::mat3 up_rotation(const std::filesystem::path& path, const std::string& up) 
 
 }  // namespace
 
+static LoadedScene bare_mesh_scene(const std::filesystem::path& path, MeshFile mesh);
+
 LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions& options) {
     const glm::mat3 rotate = up_rotation(path, options.up);
-    ObjOptions obj_options;
+    MeshFileOptions obj_options;
     obj_options.recentre_beyond = kFarFromOrigin;
-    ObjData obj = load_obj(path, obj_options);
+    MeshFile obj = load_obj(path, obj_options);
     for (vec3& p : obj.mesh.positions) p = rotate * p;
     for (vec3& n : obj.mesh.corner_normals) n = rotate * n;
+    return bare_mesh_scene(path, std::move(obj));
+}
+
+// A bare mesh file's scene: the mesh with the preset materials before its own, the
+// default background and ambient, framed and lit by frame_bounds.
+static LoadedScene bare_mesh_scene(const std::filesystem::path& path, MeshFile mesh) {
     LoadedScene out;
-    out.origin = obj.origin;
-    out.scene.origin = obj.origin;
+    out.origin = mesh.origin;
+    out.scene.origin = mesh.origin;
     SceneDescription& scene = out.scene;
     scene.materials = material_presets();
-    for (Material& m : obj.materials) scene.materials.push_back(std::move(m));
+    for (Material& m : mesh.materials) scene.materials.push_back(std::move(m));
     const auto presets = static_cast<std::uint32_t>(material_presets().size());
-    for (std::uint32_t& m : obj.mesh.materials) m = m < obj.materials.size() ? presets + m : 0;
-    const Aabb bounds = bounds_of(obj.mesh);
-    scene.meshes.push_back(std::move(obj.mesh));
+    for (std::uint32_t& m : mesh.mesh.materials) m = m < mesh.materials.size() ? presets + m : 0;
+    const Aabb bounds = bounds_of(mesh.mesh);
+    scene.meshes.push_back(std::move(mesh.mesh));
     scene.objects.push_back(Object{path.filename().string(), MeshRef{0, true}, 0, std::nullopt});
     scene.background = vec3(0.05f);
     scene.ambient = vec3(0.15f);
     frame_bounds(scene, bounds, 640, 480);
-    out.warnings = std::move(obj.warnings);
+    out.warnings = std::move(mesh.warnings);
+    return out;
+}
+
+LoadedScene load_gltf_scene(const std::filesystem::path& path, const LoadOptions& options) {
+    MeshFileOptions mesh_options;
+    mesh_options.recentre_beyond = kFarFromOrigin;
+    GltfScene gltf = load_gltf(path, mesh_options);
+    std::vector<GltfCamera> cameras = std::move(gltf.cameras);
+    std::vector<Light> lights = std::move(gltf.lights);
+    LoadedScene out = bare_mesh_scene(path, std::move(gltf.geometry));
+    if (!lights.empty()) out.scene.lights = std::move(lights);
+    if (options.camera && *options.camera >= static_cast<int>(cameras.size()))
+        throw Error(path.string(), "--camera",
+                    "no camera " + std::to_string(*options.camera) + " (the file has " +
+                        std::to_string(cameras.size()) + " perspective cameras)");
+    if (cameras.empty()) return out;
+    const GltfCamera& c = cameras[static_cast<std::size_t>(options.camera.value_or(0))];
+    int cols = 640, rows = 480;
+    if (c.aspect > 0.0f)
+        cols = std::clamp(static_cast<int>(std::lround(480.0f * c.aspect)), 1, kMaxResolution);
+    const vec3 up = glm::length(glm::cross(c.up, c.forward)) > 1e-4f ? c.up : vec3(0, 0, 1);
+    out.scene.camera = Camera::look_at(c.eye, c.eye + c.forward, up, c.yfov_degrees, cols, rows);
     return out;
 }
 
@@ -420,8 +454,9 @@ LoadedScene load_scene(const std::filesystem::path& path, const LoadOptions& opt
     const std::string ext = lower_extension(path);
     if (ext == ".obj") return load_obj_scene(path, options);
     if (ext == ".json") return load_json_scene(path);
+    if (ext == ".gltf" || ext == ".glb") return load_gltf_scene(path, options);
     throw Error(path.string(), "open",
-                "unknown scene format \"" + ext + "\" (expected .json or .obj)");
+                "unknown scene format \"" + ext + "\" (expected .json, .obj, .gltf or .glb)");
 }
 
 }  // namespace rt

@@ -1,8 +1,10 @@
 #pragma once
-// Scene files: the native JSON format (docs/scene-format.md) or a bare .obj, which is
-// framed by a default camera and lit by a default light rig.
+// Scene files: the native JSON format (docs/scene-format.md), a bare .obj, framed by a
+// default camera and lit by a default light rig, or a glTF 2.0 file (.gltf, .glb), with
+// its own camera and lights where it has them.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,12 +24,16 @@ struct LoadedScene {
 // Z-up is common for scans and CAD models.
 struct LoadOptions {
     std::string up = "y";
+    // Which of a glTF file's perspective cameras to look through (none: the first, or
+    // the default framing if it has none).
+    std::optional<int> camera;
 };
 
 // Throws rt::Error "FILE: WHERE: WHAT" on anything it cannot use.
 LoadedScene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 LoadedScene load_json_scene(const std::filesystem::path& path);
 LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions& options = {});
+LoadedScene load_gltf_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 
 // The accepted --up names, for the programs' checks.
 inline constexpr const char* kUpAxes[] = {"y", "z", "x", "-y", "-z", "-x"};

@@ -17,8 +17,8 @@ Refraction refract_dir(const vec3& d, const vec3& n, float eta_from, float eta_t
     return {false, eta * d + (eta * cos_i - cos_t) * n};
 }
 
-RayNode trace_ray_tree(const Scene& scene, const Camera& camera, const TraceOptions& options,
-                       int x, int y) {
+RayNode trace_ray_tree(const Scene& scene, const Camera& camera, const TraceOptions& options, int x,
+                       int y) {
     RayTreeRecorder recorder;
     RayCounts counts;
     Tracer(scene, options, &recorder).trace_primary(camera.ray(x, y), counts);
@@ -107,7 +107,7 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) cons
 vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool feelers) const {
     const Material& m = scene_.materials[sp.material];
     const vec3 pattern = m.checker ? m.checker->at(sp.pattern_point) : vec3(1.0f);
-    vec3 colour = m.ka * pattern * scene_.ambient;
+    vec3 colour = m.emission + m.ka * pattern * scene_.ambient;
     const vec3 to_viewer = -glm::normalize(r.dir);
     const vec3 p = offset_ray_origin(sp.p, sp.geometric_normal);
     for (const Light& light : scene_.lights) {

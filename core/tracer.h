@@ -108,7 +108,7 @@ class Tracer {
 
 // The ray tree of one pixel of `camera` (x, y from the bottom-left, as Image; inside the
 // image), recorded by the tracer as it traces the pixel.
-RayNode trace_ray_tree(const Scene& scene, const Camera& camera, const TraceOptions& options,
-                       int x, int y);
+RayNode trace_ray_tree(const Scene& scene, const Camera& camera, const TraceOptions& options, int x,
+                       int y);
 
 }  // namespace rt

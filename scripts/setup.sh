@@ -10,6 +10,7 @@ packages=(
   libopenimageio-dev openimageio-tools  # image files and comparison (idiff)
   nlohmann-json3-dev                  # scene files
   libtinyobjloader-dev                # OBJ + MTL meshes
+  libtinygltf-dev                     # glTF 2.0 scenes
   libcli11-dev                        # command lines
   libgtest-dev                        # tests
   python3-glad                        # generates the OpenGL loader at build time

@@ -50,6 +50,7 @@ uniform float u_kr;   // reflectivity
 uniform float u_kt;   // transparency
 uniform float u_ior;
 
+uniform vec3 u_emission;
 uniform vec3 u_ka;
 uniform vec3 u_kd;
 uniform vec3 u_ks;
@@ -165,7 +166,7 @@ void main() {
     vec3 n = dot(ns, ng) > 0.0 ? ns : ng;
 
     vec3 c = pattern(s.object);
-    vec3 colour = u_ka * c * u_ambient;
+    vec3 colour = u_emission + u_ka * c * u_ambient;
     for (int i = 0; i < u_light_count; ++i) {
         vec3 to_light = u_light_directional[i] == 1 ? -u_light_vector[i] : u_light_vector[i] - s.world;
         float distance = length(to_light);

@@ -45,6 +45,7 @@ void RasterRenderer::set_object(Program& program, const DrawItem& item, const Ca
 }
 
 void RasterRenderer::set_material(const Material& m, const DrawItem& item) {
+    phong_->set("u_emission", m.emission);
     phong_->set("u_ka", m.ka);
     phong_->set("u_kd", m.kd);
     phong_->set("u_ks", m.ks);

@@ -37,6 +37,10 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
                    "Primary hits from the raster item buffer: on or off")
         ->check(CLI::IsMember({"on", "off"}));
     app.add_option("--size", o.size, "Image size WxH (default: the scene's resolution)");
+    app.add_option("--camera", o.camera,
+                   "Which of a glTF file's perspective cameras to look through: 0 (the "
+                   "first, default), 1, ...")
+        ->check(CLI::Range(0, 1 << 20));
     app.add_option("--up", o.up, "A bare mesh's up axis: y (default), z, x, -y, -z or -x")
         ->check(CLI::IsMember(
             std::vector<std::string>(std::begin(rt::kUpAxes), std::end(rt::kUpAxes))));

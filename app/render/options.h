@@ -1,6 +1,7 @@
 #pragma once
 // rtrender's command line, parsed.
 
+#include <optional>
 #include <string>
 
 #include "app/gl/context.h"
@@ -25,7 +26,8 @@ struct Options {
     Mode mode = Mode::kTrace;
     rt::gl::Backend gl = rt::gl::Backend::kAuto;
     rt::AccelKind accel = rt::AccelKind::kBvh;
-    std::string up = "y";  // a bare mesh's up axis (rt::LoadOptions)
+    std::string up = "y";       // a bare mesh's up axis (rt::LoadOptions)
+    std::optional<int> camera;  // a glTF file's camera (rt::LoadOptions)
     bool item_buffer = false;
     int threads = 0;
     int spp = 1;               // traced samples per pixel (a square number)

@@ -245,7 +245,7 @@ int Job::run() {
     const bool show_phases = !o_.quiet && isatty(STDERR_FILENO);
     {
         const PhaseLine phase(show_phases, "loading " + o_.scene);
-        loaded_ = rt::load_scene(o_.scene, rt::LoadOptions{.up = o_.up});
+        loaded_ = rt::load_scene(o_.scene, rt::LoadOptions{.up = o_.up, .camera = o_.camera});
     }
     if (!o_.quiet)
         for (const std::string& w : loaded_.warnings) std::cerr << w << '\n';

@@ -43,6 +43,10 @@ int main(int argc, char** argv) {
                    "Raster mirrors and glass at the start: none (default) or envmap "
                    "(environment maps)")
         ->check(CLI::IsMember({"none", "envmap"}));
+    app.add_option("--camera", options.camera,
+                   "Which of a glTF file's perspective cameras to look through (the first "
+                   "scene's): 0 (default), 1, ...")
+        ->check(CLI::Range(0, 1 << 20));
     app.add_option("--up", options.up, "A bare mesh's up axis: y (default), z, x, -y, -z or -x")
         ->check(CLI::IsMember(
             std::vector<std::string>(std::begin(rt::kUpAxes), std::end(rt::kUpAxes))));
@@ -79,8 +83,7 @@ int main(int argc, char** argv) {
         if (app.count("scene") > 0) {
             scenes.push_back(options.scene);
         } else {
-            for (const auto& p :
-                 rt::viewer::SceneSwitcher(rt::viewer::scenes_dir()).scenes())
+            for (const auto& p : rt::viewer::SceneSwitcher(rt::viewer::scenes_dir()).scenes())
                 scenes.push_back(p.string());
         }
         return viewer.benchmark(scenes);

@@ -44,8 +44,9 @@ namespace {
 
 // The part of loading that needs no GL: parse and build. Throws rt::Error.
 std::shared_ptr<const rt::Scene> read_scene(const std::string& path, rt::AccelKind accel,
-                                            const std::string& up) {
-    rt::LoadedScene loaded = rt::load_scene(path, rt::LoadOptions{.up = up});
+                                            const std::string& up,
+                                            std::optional<int> camera = std::nullopt) {
+    rt::LoadedScene loaded = rt::load_scene(path, rt::LoadOptions{.up = up, .camera = camera});
     for (const std::string& w : loaded.warnings) std::cerr << w << '\n';
     return std::make_shared<const rt::Scene>(std::move(loaded.scene), accel);
 }
@@ -54,8 +55,8 @@ std::shared_ptr<const rt::Scene> read_scene(const std::string& path, rt::AccelKi
 
 Viewer::Viewer(const ViewerOptions& options)
     : options_(options),
-      first_scene_(read_scene(options.scene, options.accel,
-                              options.up)),  // a bad file fails before any window opens
+      first_scene_(read_scene(options.scene, options.accel, options.up,
+                              options.camera)),  // a bad file fails before any window opens
       window_(options.width, options.height, "rtview"),
       scenes_(scenes_dir()),
       tracer_([] { glfwPostEmptyEvent(); }),

@@ -44,6 +44,7 @@ struct ViewerOptions {
     int msaa = 1;          // the raster's tricks at the start (the panel switches them)
     bool shadow_maps = false;
     bool environment_maps = false;
+    std::optional<int> camera;  // the first scene's glTF camera (rt::LoadOptions)
 };
 
 struct Settings {

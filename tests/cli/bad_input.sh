@@ -64,10 +64,16 @@ where_of() {
         zero_index.obj) echo "line 4" ;;
         zero_up.json) echo "/camera/up" ;;
         bom_zero_index.obj) echo "line 3" ;;
+        gltf_accessor_out_of_range.gltf) echo "/accessors/0" ;;
+        gltf_index_out_of_range.gltf) echo "/accessors/4" ;;
+        gltf_missing_buffer.gltf) echo "load" ;;
+        gltf_node_cycle.gltf) echo "/nodes/0" ;;
+        gltf_required_extension.gltf) echo "/extensionsRequired" ;;
+        gltf_truncated.glb) echo "load" ;;
         *) echo "UNLISTED" ;;  # a new corpus file must say where its error is
     esac
 }
-for path in "$corpus"/*.json "$corpus"/*.obj; do
+for path in "$corpus"/*.json "$corpus"/*.obj "$corpus"/*.gltf "$corpus"/*.glb; do
     name=$(basename "$path")
     case $name in
         index_out_of_range.obj) continue ;;           # a part of mesh_index_out_of_range.json

@@ -184,15 +184,15 @@ TEST(Loader, UpAxisTurnsABareMesh) {
     const vec3 want_normal[] = {{0, 0, 2}, {0, -2, 0}, {0, 0, -2}, {0, 2, 0}};
     const char* axes[] = {"z", "y", "-z", "-y"};
     for (int i = 0; i < 4; ++i) {
-        const LoadedScene loaded = load_scene(path, LoadOptions{.up = axes[i]});
+        const LoadedScene loaded = load_scene(path, LoadOptions{.up = axes[i], .camera = {}});
         const TriangleMesh& mesh = loaded.scene.meshes[0];
         EXPECT_EQ(mesh.positions[2], want_top[i]) << axes[i];
         EXPECT_EQ(mesh.face_normal(0), want_normal[i]) << axes[i];
     }
-    const LoadedScene x_up = load_scene(path, LoadOptions{.up = "x"});
+    const LoadedScene x_up = load_scene(path, LoadOptions{.up = "x", .camera = {}});
     EXPECT_EQ(x_up.scene.meshes[0].positions[1], vec3(0, 1, 0));  // x became y
     try {
-        load_scene(path, LoadOptions{.up = "w"});
+        load_scene(path, LoadOptions{.up = "w", .camera = {}});
         FAIL() << "loaded";
     } catch (const Error& e) {
         EXPECT_EQ(e.where(), "--up");

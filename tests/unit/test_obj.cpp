@@ -12,7 +12,7 @@ namespace rt {
 namespace {
 
 TEST(Obj, CornellBoxQuadsAreTriangulatedAndMtlIsMapped) {
-    const ObjData obj = load_obj(test::source_dir() / "assets/models/cornell_box.obj");
+    const MeshFile obj = load_obj(test::source_dir() / "assets/models/cornell_box.obj");
     EXPECT_EQ(obj.mesh.triangles.size(), 36u);  // 18 quads
     ASSERT_EQ(obj.materials.size(), 5u);
     const auto light = std::find_if(obj.materials.begin(), obj.materials.end(),
@@ -34,7 +34,7 @@ TEST(Obj, MissingNormalsAreComputedSmoothButCreased) {
         test::write_file(dir / "cube.obj",
                          "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
                          "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
-    const ObjData obj = load_obj(path);
+    const MeshFile obj = load_obj(path);
     ASSERT_EQ(obj.mesh.triangles.size(), 12u);
     ASSERT_EQ(obj.mesh.corner_normals.size(), 36u);
     for (std::uint32_t t = 0; t < 12; ++t) {
@@ -45,7 +45,7 @@ TEST(Obj, MissingNormalsAreComputedSmoothButCreased) {
 }
 
 TEST(Obj, SmoothSurfacesGetAveragedNormals) {
-    const ObjData obj = load_obj(test::source_dir() / "assets/models/teapot.obj");
+    const MeshFile obj = load_obj(test::source_dir() / "assets/models/teapot.obj");
     ASSERT_EQ(obj.mesh.corner_normals.size(), 3 * obj.mesh.triangles.size());
     int smoothed = 0;
     for (std::uint32_t t = 0; t < obj.mesh.triangles.size(); ++t) {
@@ -111,7 +111,7 @@ TEST(Obj, ByteOrderMarkIsSkippedInObjAndMtl) {
     const auto path = test::write_file(
         dir / "bom.obj",
         "\xEF\xBB\xBFmtllib bom.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
-    const ObjData obj = load_obj(path);
+    const MeshFile obj = load_obj(path);
     ASSERT_EQ(obj.materials.size(), 1u);
     EXPECT_EQ(obj.materials[0].name, "red");
     EXPECT_EQ(obj.materials[0].kd, vec3(1.0f, 0.0f, 0.0f));
@@ -128,7 +128,7 @@ TEST(Obj, MtllibNamingADirectoryIsAWarning) {
     for (const char* line : {"mtllib \n", "mtllib sub\n", "mtllib sub \n"}) {
         const auto path = test::write_file(
             dir / "m.obj", std::string(line) + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-        const ObjData obj = load_obj(path);
+        const MeshFile obj = load_obj(path);
         EXPECT_EQ(obj.mesh.triangles.size(), 1u) << line;
         EXPECT_FALSE(obj.warnings.empty()) << line;
     }
@@ -139,7 +139,7 @@ TEST(Obj, MtllibNamingADirectoryIsAWarning) {
 TEST(Obj, LinesAndPointsLoadWithOneWarning) {
     const auto path = test::write_file(test::temp_dir("obj_lines") / "l.obj",
                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2 3\np 1\nl 3 9\n");
-    const ObjData obj = load_obj(path);
+    const MeshFile obj = load_obj(path);
     EXPECT_EQ(obj.mesh.triangles.size(), 1u);
     EXPECT_EQ(obj.mesh.segments, (std::vector<glm::uvec2>{{0, 1}, {1, 2}}));  // 3-9: out of range
     EXPECT_EQ(obj.mesh.points, (std::vector<std::uint32_t>{0}));
@@ -149,7 +149,7 @@ TEST(Obj, LinesAndPointsLoadWithOneWarning) {
         std::string::npos);
     const auto only = test::write_file(test::temp_dir("obj_only_lines") / "o.obj",
                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\n");
-    const ObjData lines = load_obj(only);
+    const MeshFile lines = load_obj(only);
     EXPECT_TRUE(lines.mesh.triangles.empty());
     EXPECT_EQ(lines.mesh.segments.size(), 1u);
     EXPECT_EQ(bounds_of(lines.mesh).hi, vec3(1.0f, 0.0f, 0.0f));
@@ -158,7 +158,7 @@ TEST(Obj, LinesAndPointsLoadWithOneWarning) {
 TEST(Obj, RelativeIndicesWork) {
     const auto path = test::write_file(test::temp_dir("relative") / "r.obj",
                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n");
-    const ObjData obj = load_obj(path);
+    const MeshFile obj = load_obj(path);
     ASSERT_EQ(obj.mesh.triangles.size(), 1u);
     EXPECT_EQ(obj.mesh.triangles[0], glm::uvec3(0, 1, 2));
 }
@@ -166,7 +166,7 @@ TEST(Obj, RelativeIndicesWork) {
 TEST(Obj, MissingMtlIsAWarningNotAnError) {
     const auto path = test::write_file(test::temp_dir("nomtl") / "m.obj",
                                        "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    const ObjData obj = load_obj(path);
+    const MeshFile obj = load_obj(path);
     EXPECT_EQ(obj.mesh.triangles.size(), 1u);
     EXPECT_FALSE(obj.warnings.empty());
 }
@@ -185,7 +185,7 @@ TEST(Obj, MillionFacesOnOneTriangleLoadInLinearTime) {
     std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
     for (int i = 0; i < 1000000; ++i) text += "f 1 2 3\n";
     const auto path = test::write_file(test::temp_dir("obj_valence") / "v.obj", text);
-    const ObjData obj = load_obj(path);
+    const MeshFile obj = load_obj(path);
     EXPECT_EQ(obj.mesh.triangles.size(), 1u);
     ASSERT_EQ(obj.warnings.size(), 1u);
     EXPECT_NE(obj.warnings[0].find("999999 faces repeat"), std::string::npos);
@@ -204,7 +204,7 @@ TEST(Obj, HighValenceApexStaysLinearAndDefined) {
     for (int i = 0; i < kSides; ++i)
         text += "f 1 " + std::to_string(2 + (i + 1) % kSides) + " " + std::to_string(2 + i) + "\n";
     const auto path = test::write_file(test::temp_dir("obj_apex") / "cone.obj", text);
-    const ObjData obj = load_obj(path);
+    const MeshFile obj = load_obj(path);
     ASSERT_EQ(obj.mesh.corner_normals.size(), 3u * obj.mesh.triangles.size());
     for (std::size_t t = 0; t < obj.mesh.triangles.size(); t += 997) {
         const vec3 own = glm::normalize(obj.mesh.face_normal(static_cast<std::uint32_t>(t)));

@@ -1,0 +1,443 @@
+#include "core/gltf_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <set>
+
+#include <tiny_gltf.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+#include "core/error.h"
+#include "core/file_kind.h"
+
+namespace rt {
+namespace {
+
+// Extensions whose meaning the loader takes in; any other is named in one warning.
+const std::set<std::string> kUnderstood = {"KHR_materials_transmission", "KHR_materials_ior",
+                                           "KHR_lights_punctual"};
+
+std::string at(const char* array, int index) {
+    return "/" + std::string(array) + "/" + std::to_string(index);
+}
+
+// Images are not decoded here (textures are read through OpenImageIO): tinygltf is asked
+// to keep its hands off them.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                const unsigned char*, int, void*) {
+    return true;
+}
+
+// One component of an accessor's element, as a double (normalised integers to [0, 1] or
+// [-1, 1], as the specification says).
+double component(const unsigned char* p, int type, bool normalized) {
+    const auto read = [&](auto value, double scale) {
+        std::memcpy(&value, p, sizeof value);
+        const double v = static_cast<double>(value);
+        return normalized ? std::max(v / scale, -1.0) : v;
+    };
+    switch (type) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return read(std::int8_t{}, 127.0);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return read(std::uint8_t{}, 255.0);
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            return read(std::int16_t{}, 32767.0);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return read(std::uint16_t{}, 65535.0);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            return read(std::uint32_t{}, 4294967295.0);
+        default:
+            return read(float{}, 1.0);
+    }
+}
+
+class GltfReader {
+  public:
+    GltfReader(std::filesystem::path path, const MeshFileOptions& options)
+        : path_(std::move(path)), file_(path_.string()), options_(options) {}
+
+    GltfScene read();
+
+  private:
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw Error(file_, where, what);
+    }
+    void warn(const std::string& where, const std::string& what) {
+        scene_.geometry.warnings.push_back(file_ + ": " + where + ": " + what);
+    }
+    void parse();
+    void check_extensions();
+    std::vector<int> root_nodes();
+    void walk(int node, const glm::dmat4& parent, std::vector<int>& path);
+    glm::dmat4 local_matrix(const tinygltf::Node& n, const std::string& where) const;
+    void add_mesh(int mesh, const glm::dmat4& world, const std::string& where);
+    void add_primitive(const tinygltf::Primitive& p, const glm::dmat4& world,
+                       const std::string& where);
+    void add_camera(int camera, const glm::dmat4& world, const std::string& where);
+    void add_light(const tinygltf::Value& ext, const glm::dmat4& world, const std::string& where);
+    Material material(int index) const;
+    // An accessor's elements of `width` components each, checked against its buffer.
+    std::vector<double> elements(int accessor, int width, const std::string& where) const;
+    void finish();
+
+    std::filesystem::path path_;
+    std::string file_;
+    MeshFileOptions options_;
+    tinygltf::Model model_;
+    GltfScene scene_;
+    std::vector<glm::dvec3> positions_;  // in the file's coordinates, before the origin
+    std::vector<glm::dvec3> normals_;    // per corner, or empty per triangle (flat)
+    std::vector<bool> has_normals_;      // per triangle
+    std::vector<glm::dvec3> camera_eyes_;
+    struct PendingLight {
+        Light light;
+        glm::dvec3 position;
+        double intensity;
+    };
+    std::vector<PendingLight> lights_;
+    int skipped_primitives_ = 0;
+};
+
+void GltfReader::parse() {
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skip_image, nullptr);
+    std::string err, warn;
+    const bool binary = lower_extension(path_) == ".glb";
+    const bool ok = binary ? loader.LoadBinaryFromFile(&model_, &err, &warn, file_)
+                           : loader.LoadASCIIFromFile(&model_, &err, &warn, file_);
+    if (!ok) {
+        std::string what = err.empty() ? "not a glTF 2.0 file" : err;
+        while (!what.empty() && (what.back() == '\n' || what.back() == ' ')) what.pop_back();
+        std::replace(what.begin(), what.end(), '\n', ';');
+        fail("load", what);
+    }
+}
+
+void GltfReader::check_extensions() {
+    for (const std::string& e : model_.extensionsRequired)
+        if (!kUnderstood.count(e))
+            fail("/extensionsRequired",
+                 "requires the extension " + e + ", which rtview cannot read");
+    std::string unknown;
+    for (const std::string& e : model_.extensionsUsed)
+        if (!kUnderstood.count(e)) unknown += (unknown.empty() ? "" : ", ") + e;
+    if (!unknown.empty()) warn("/extensionsUsed", "ignored: " + unknown);
+}
+
+std::vector<int> GltfReader::root_nodes() {
+    const int count = static_cast<int>(model_.scenes.size());
+    if (count > 0) {
+        const int s =
+            model_.defaultScene >= 0 && model_.defaultScene < count ? model_.defaultScene : 0;
+        return model_.scenes[static_cast<std::size_t>(s)].nodes;
+    }
+    std::vector<bool> child(model_.nodes.size(), false);  // no scene: every root node
+    for (const tinygltf::Node& n : model_.nodes)
+        for (int c : n.children)
+            if (c >= 0 && c < static_cast<int>(child.size()))
+                child[static_cast<std::size_t>(c)] = true;
+    std::vector<int> roots;
+    for (std::size_t i = 0; i < child.size(); ++i)
+        if (!child[i]) roots.push_back(static_cast<int>(i));
+    return roots;
+}
+
+glm::dmat4 GltfReader::local_matrix(const tinygltf::Node& n, const std::string& where) const {
+    if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());  // column-major, as glTF
+    glm::dmat4 m(1.0);
+    if (n.translation.size() == 3) m = glm::translate(m, glm::make_vec3(n.translation.data()));
+    if (n.rotation.size() == 4) {
+        const glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
+        if (!(glm::length(q) > 0.0)) fail(where + "/rotation", "the quaternion is zero");
+        m *= glm::mat4_cast(glm::normalize(q));
+    }
+    if (n.scale.size() == 3) m = glm::scale(m, glm::make_vec3(n.scale.data()));
+    return m;
+}
+
+void GltfReader::walk(int node, const glm::dmat4& parent, std::vector<int>& path) {
+    const std::string where = at("nodes", node);
+    if (node < 0 || node >= static_cast<int>(model_.nodes.size()))
+        fail(where, "no such node (the file has " + std::to_string(model_.nodes.size()) + ")");
+    if (std::find(path.begin(), path.end(), node) != path.end())
+        fail(where, "the node is its own ancestor (the hierarchy must be a tree)");
+    const tinygltf::Node& n = model_.nodes[static_cast<std::size_t>(node)];
+    const glm::dmat4 world = parent * local_matrix(n, where);
+    if (n.mesh >= 0) add_mesh(n.mesh, world, where);
+    if (n.camera >= 0) add_camera(n.camera, world, where);
+    if (const auto it = n.extensions.find("KHR_lights_punctual"); it != n.extensions.end())
+        add_light(it->second, world, where);
+    path.push_back(node);
+    for (int c : n.children) walk(c, world, path);
+    path.pop_back();
+}
+
+std::vector<double> GltfReader::elements(int index, int width, const std::string& where) const {
+    if (index < 0 || index >= static_cast<int>(model_.accessors.size()))
+        fail(where, "no such accessor " + std::to_string(index));
+    const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+    const std::string here = at("accessors", index);
+    if (a.sparse.isSparse) fail(here, "sparse accessors are not supported");
+    if (tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)) != width)
+        fail(here, "expected " + std::to_string(width) + " components an element");
+    std::vector<double> out(a.count * static_cast<std::size_t>(width), 0.0);
+    if (a.bufferView < 0) return out;  // all zeros, as the specification says
+    if (a.bufferView >= static_cast<int>(model_.bufferViews.size()))
+        fail(here, "no such bufferView " + std::to_string(a.bufferView));
+    const tinygltf::BufferView& v = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+    if (v.buffer < 0 || v.buffer >= static_cast<int>(model_.buffers.size()))
+        fail(at("bufferViews", a.bufferView), "no such buffer " + std::to_string(v.buffer));
+    const std::vector<unsigned char>& data =
+        model_.buffers[static_cast<std::size_t>(v.buffer)].data;
+    const int size = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType));
+    if (size <= 0) fail(here, "unknown component type " + std::to_string(a.componentType));
+    const std::size_t element = static_cast<std::size_t>(size) * static_cast<std::size_t>(width);
+    const std::size_t stride = v.byteStride > 0 ? v.byteStride : element;
+    const std::size_t first = v.byteOffset + a.byteOffset;
+    const std::size_t end = a.count == 0 ? first : first + (a.count - 1) * stride + element;
+    if (v.byteOffset + v.byteLength > data.size() || a.byteOffset + (end - first) > v.byteLength ||
+        end < first)
+        fail(here, "its " + std::to_string(a.count) + " elements run past the end of its buffer");
+    for (std::size_t i = 0; i < a.count; ++i)
+        for (int c = 0; c < width; ++c)
+            out[i * static_cast<std::size_t>(width) + static_cast<std::size_t>(c)] =
+                component(data.data() + first + i * stride + static_cast<std::size_t>(c * size),
+                          a.componentType, a.normalized);
+    return out;
+}
+
+void GltfReader::add_mesh(int mesh, const glm::dmat4& world, const std::string& where) {
+    if (mesh >= static_cast<int>(model_.meshes.size()))
+        fail(where + "/mesh", "no such mesh " + std::to_string(mesh));
+    const tinygltf::Mesh& m = model_.meshes[static_cast<std::size_t>(mesh)];
+    for (std::size_t i = 0; i < m.primitives.size(); ++i)
+        add_primitive(m.primitives[i], world,
+                      at("meshes", mesh) + "/primitives/" + std::to_string(i));
+}
+
+// Corner indices of the primitive's triangles (lists, strips and fans).
+std::vector<std::uint32_t> triangle_corners(const std::vector<std::uint32_t>& index, int mode) {
+    std::vector<std::uint32_t> out;
+    const std::size_t n = index.size();
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        out.assign(index.begin(), index.begin() + static_cast<std::ptrdiff_t>(n - n % 3));
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        for (std::size_t i = 2; i < n; ++i) {  // every other one turned, to keep the winding
+            const bool odd = i % 2 == 1;
+            out.insert(out.end(), {index[i - 2], index[odd ? i : i - 1], index[odd ? i - 1 : i]});
+        }
+    } else {  // fan
+        for (std::size_t i = 2; i < n; ++i)
+            out.insert(out.end(), {index[0], index[i - 1], index[i]});
+    }
+    return out;
+}
+
+void GltfReader::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& world,
+                               const std::string& where) {
+    if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        p.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        ++skipped_primitives_;  // points and lines: the tracer renders surfaces
+        return;
+    }
+    const auto pos = p.attributes.find("POSITION");
+    if (pos == p.attributes.end()) fail(where + "/attributes", "no POSITION");
+    const std::vector<double> xyz = elements(pos->second, 3, where + "/attributes/POSITION");
+    const std::size_t vertices = xyz.size() / 3;
+    std::vector<std::uint32_t> index(vertices);
+    if (p.indices >= 0) {
+        const std::vector<double> raw = elements(p.indices, 1, where + "/indices");
+        index.resize(raw.size());
+        for (std::size_t i = 0; i < raw.size(); ++i) {
+            if (!(raw[i] >= 0.0 && raw[i] < static_cast<double>(vertices)))
+                fail(at("accessors", p.indices),
+                     "index " + std::to_string(static_cast<long long>(std::min(raw[i], 1e18))) +
+                         " is past the last vertex (" + std::to_string(vertices) + ")");
+            index[i] = static_cast<std::uint32_t>(raw[i]);
+        }
+    } else {
+        for (std::size_t i = 0; i < vertices; ++i) index[i] = static_cast<std::uint32_t>(i);
+    }
+    std::vector<double> normals;
+    if (const auto n = p.attributes.find("NORMAL"); n != p.attributes.end()) {
+        normals = elements(n->second, 3, where + "/attributes/NORMAL");
+        if (normals.size() != xyz.size())
+            fail(at("accessors", n->second), "not one normal a vertex");
+    }
+    const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+    const auto base = static_cast<std::uint32_t>(positions_.size());
+    for (std::size_t v = 0; v < vertices; ++v)
+        positions_.push_back(
+            glm::dvec3(world * glm::dvec4(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2], 1.0)));
+    const std::uint32_t material =
+        p.material >= 0 ? static_cast<std::uint32_t>(p.material) : kNoFileMaterial;
+    const std::vector<std::uint32_t> corners = triangle_corners(index, p.mode);
+    TriangleMesh& mesh = scene_.geometry.mesh;
+    for (std::size_t c = 0; c + 2 < corners.size(); c += 3) {
+        mesh.triangles.push_back({base + corners[c], base + corners[c + 1], base + corners[c + 2]});
+        mesh.materials.push_back(material);
+        has_normals_.push_back(!normals.empty());
+        for (int k = 0; k < 3; ++k) {
+            const std::size_t v = corners[c + static_cast<std::size_t>(k)];
+            normals_.push_back(normals.empty()
+                                   ? glm::dvec3(0.0)
+                                   : normal_matrix * glm::dvec3(normals[3 * v], normals[3 * v + 1],
+                                                                normals[3 * v + 2]));
+        }
+    }
+    if (p.material >= static_cast<int>(model_.materials.size()))
+        fail(where + "/material", "no such material " + std::to_string(p.material));
+}
+
+void GltfReader::add_camera(int camera, const glm::dmat4& world, const std::string& where) {
+    if (camera >= static_cast<int>(model_.cameras.size()))
+        fail(where + "/camera", "no such camera " + std::to_string(camera));
+    const tinygltf::Camera& c = model_.cameras[static_cast<std::size_t>(camera)];
+    if (c.type != "perspective") {
+        warn(at("cameras", camera), "a " + c.type + " camera: only perspective ones are used");
+        return;
+    }
+    const double yfov = glm::degrees(c.perspective.yfov);
+    if (!(yfov > 0.01 && yfov < 179.0))
+        fail(at("cameras", camera) + "/perspective/yfov", "out of range");
+    GltfCamera cam;
+    cam.name = c.name.empty() ? "camera " + std::to_string(camera) : c.name;
+    cam.forward = vec3(glm::normalize(glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0)));
+    cam.up = vec3(glm::normalize(glm::dmat3(world) * glm::dvec3(0.0, 1.0, 0.0)));
+    if (!std::isfinite(cam.forward.x) || !std::isfinite(cam.up.x))
+        fail(where, "the camera's transform is singular");
+    cam.yfov_degrees = static_cast<float>(yfov);
+    cam.aspect = static_cast<float>(c.perspective.aspectRatio);
+    camera_eyes_.push_back(glm::dvec3(world[3]));
+    scene_.cameras.push_back(cam);
+}
+
+void GltfReader::add_light(const tinygltf::Value& ext, const glm::dmat4& world,
+                           const std::string& where) {
+    if (!ext.Has("light") || !ext.Get("light").IsInt()) return;
+    const int index = ext.Get("light").Get<int>();
+    if (index < 0 || index >= static_cast<int>(model_.lights.size()))
+        fail(where + "/extensions/KHR_lights_punctual/light",
+             "no such light " + std::to_string(index));
+    const tinygltf::Light& l = model_.lights[static_cast<std::size_t>(index)];
+    PendingLight p{Light{}, glm::dvec3(world[3]), std::max(l.intensity, 0.0)};
+    if (l.color.size() == 3) p.light.colour = vec3(l.color[0], l.color[1], l.color[2]);
+    if (l.type == "directional") {
+        p.light.type = Light::Type::kDirectional;
+        p.light.direction = vec3(glm::normalize(glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0)));
+    } else if (l.type == "spot") {
+        warn("/extensions/KHR_lights_punctual/lights/" + std::to_string(index),
+             "a spot light, lit as a point light (no cone)");
+    }
+    lights_.push_back(p);
+}
+
+// glTF's metallic-roughness material as the tutorial's Phong terms (docs/scene-format.md).
+Material GltfReader::material(int index) const {
+    const tinygltf::Material& g = model_.materials[static_cast<std::size_t>(index)];
+    const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+    vec3 base(1.0f);
+    if (pbr.baseColorFactor.size() >= 3)
+        base = vec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]);
+    const float metallic = std::clamp(static_cast<float>(pbr.metallicFactor), 0.0f, 1.0f);
+    const float roughness = std::clamp(static_cast<float>(pbr.roughnessFactor), 0.0f, 1.0f);
+    Material m;
+    m.name = g.name.empty() ? "material " + std::to_string(index) : g.name;
+    // A smooth metal is a mirror of its colour; what a surface does not mirror it
+    // scatters: a rough metal looks like a coloured matte one, a dielectric is its base
+    // colour with a 4 % highlight. The highlight narrows as the roughness falls.
+    m.reflectivity = metallic * (1.0f - roughness);
+    m.kd = base * (1.0f - m.reflectivity);
+    m.ka = m.kd;
+    m.ks = glm::mix(vec3(0.04f), base, metallic);
+    const float alpha = std::max(roughness * roughness, 0.03f);  // GGX's alpha
+    m.shininess = std::clamp(2.0f / (alpha * alpha) - 2.0f, 1.0f, 2000.0f);
+    if (g.emissiveFactor.size() == 3)
+        m.emission = vec3(g.emissiveFactor[0], g.emissiveFactor[1], g.emissiveFactor[2]);
+    if (const auto t = g.extensions.find("KHR_materials_transmission"); t != g.extensions.end())
+        if (t->second.Has("transmissionFactor"))
+            m.transparency = std::clamp(
+                static_cast<float>(t->second.Get("transmissionFactor").GetNumberAsDouble()), 0.0f,
+                1.0f);
+    if (const auto i = g.extensions.find("KHR_materials_ior"); i != g.extensions.end())
+        if (i->second.Has("ior")) {
+            const double ior = i->second.Get("ior").GetNumberAsDouble();
+            if (ior > 0.0) m.ior = static_cast<float>(ior);
+        }
+    return m;
+}
+
+// Positions to float relative to the origin; normals; lights scaled; cameras placed.
+void GltfReader::finish() {
+    MeshFile& g = scene_.geometry;
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::dvec3& p : positions_) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            fail("/accessors", "a position is not a finite number");
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const glm::dvec3 centre = positions_.empty() ? glm::dvec3(0.0) : 0.5 * (lo + hi);
+    if (options_.origin)
+        g.origin = *options_.origin;
+    else if (std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)}) >
+             options_.recentre_beyond)
+        g.origin = centre;
+    for (const glm::dvec3& p : positions_) g.mesh.positions.push_back(vec3(p - g.origin));
+    if (std::find(has_normals_.begin(), has_normals_.end(), true) != has_normals_.end()) {
+        for (std::size_t t = 0; t < g.mesh.triangles.size(); ++t) {
+            const vec3 face = glm::normalize(g.mesh.face_normal(static_cast<std::uint32_t>(t)));
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec3 n = normals_[3 * t + static_cast<std::size_t>(k)];
+                g.mesh.corner_normals.push_back(has_normals_[t] && glm::length(n) > 0.0
+                                                    ? vec3(glm::normalize(n))
+                                                    : face);  // flat where the file gives none
+            }
+        }
+    }
+    for (std::size_t i = 0; i < scene_.cameras.size(); ++i)
+        scene_.cameras[i].eye = vec3(camera_eyes_[i] - g.origin);
+    double brightest = 0.0;
+    std::vector<double> strength;
+    for (const PendingLight& p : lights_) {
+        const double d2 = glm::dot(p.position - centre, p.position - centre);
+        strength.push_back(p.light.type == Light::Type::kDirectional
+                               ? p.intensity
+                               : p.intensity / std::max(d2, 1e-12));
+        brightest = std::max(brightest, strength.back());
+    }
+    for (std::size_t i = 0; i < lights_.size(); ++i) {
+        Light l = lights_[i].light;
+        l.position = vec3(lights_[i].position - g.origin);
+        l.colour *= brightest > 0.0 ? static_cast<float>(strength[i] / brightest) : 0.0f;
+        scene_.lights.push_back(l);
+    }
+    if (skipped_primitives_ > 0)
+        warn("/meshes", std::to_string(skipped_primitives_) +
+                            " primitives of points or lines skipped (the tracer renders surfaces)");
+}
+
+GltfScene GltfReader::read() {
+    parse();
+    check_extensions();
+    std::vector<int> path;
+    for (int root : root_nodes()) walk(root, glm::dmat4(1.0), path);
+    for (std::size_t i = 0; i < model_.materials.size(); ++i)
+        scene_.geometry.materials.push_back(material(static_cast<int>(i)));
+    finish();
+    return std::move(scene_);
+}
+
+}  // namespace
+
+GltfScene load_gltf(const std::filesystem::path& path, const MeshFileOptions& options) {
+    return GltfReader(path, options).read();
+}
+
+}  // namespace rt

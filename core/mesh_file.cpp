@@ -1,0 +1,18 @@
+#include "core/mesh_file.h"
+
+#include "core/error.h"
+#include "core/file_kind.h"
+#include "core/gltf_loader.h"
+#include "core/obj_loader.h"
+
+namespace rt {
+
+MeshFile load_mesh_file(const std::filesystem::path& path, const MeshFileOptions& options) {
+    const std::string ext = lower_extension(path);
+    if (ext == ".obj") return load_obj(path, options);
+    if (ext == ".gltf" || ext == ".glb") return load_gltf(path, options).geometry;
+    throw Error(path.string(), "open",
+                "unknown mesh format \"" + ext + "\" (expected .obj, .gltf or .glb)");
+}
+
+}  // namespace rt

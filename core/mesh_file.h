@@ -1,0 +1,42 @@
+#pragma once
+// A mesh read from a file (OBJ, glTF), as the scene loader takes it in: the triangles,
+// their materials, what was skipped, and where the positions' zero lies.
+
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/material.h"
+#include "core/mesh.h"
+
+namespace rt {
+
+struct MeshFileOptions {
+    float crease_degrees = 60.0f;
+    // Where the centre of the mesh's box lies beyond this distance from the origin (in
+    // any coordinate), store positions relative to it (MeshFile::origin), taken off in
+    // double precision: a model far from the origin keeps its shape in float.
+    double recentre_beyond = std::numeric_limits<double>::infinity();
+    // Or store positions relative to this point (a scene's origin, core/scene_loader.h).
+    std::optional<glm::dvec3> origin;
+};
+
+struct MeshFile {
+    TriangleMesh mesh;  // mesh.materials index `materials`; kNoFileMaterial where none was named
+    std::vector<Material> materials;
+    std::vector<std::string> warnings;  // "FILE: WHERE: WHAT" lines for what was skipped
+    glm::dvec3 origin{0.0};             // where the positions' zero is, in the file's coordinates
+};
+
+inline constexpr std::uint32_t kNoFileMaterial = 0xffffffffu;
+
+// By the file's extension: .obj (core/obj_loader.h), .gltf or .glb (core/gltf_loader.h).
+// Throws rt::Error naming the file on anything it cannot use.
+MeshFile load_mesh_file(const std::filesystem::path& path, const MeshFileOptions& options = {});
+
+}  // namespace rt
