@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <set>
 
 #include <tiny_gltf.h>
@@ -26,11 +27,19 @@ std::string at(const char* array, int index) {
     return "/" + std::string(array) + "/" + std::to_string(index);
 }
 
-// Images are not decoded here (textures are read through OpenImageIO): tinygltf is asked
-// to keep its hands off them.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
+// Images are decoded through OpenImageIO (core/texture.h), not by tinygltf: it hands
+// over the encoded bytes (of a file, a data URI or a .glb's buffer), kept as they are.
+bool keep_encoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                  const unsigned char* bytes, int size, void*) {
+    image->image.assign(bytes, bytes + size);
+    image->width = image->height = -1;  // not decoded
     return true;
+}
+
+Wrap wrap_mode(int gl) {
+    return gl == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? Wrap::kClamp
+           : gl == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? Wrap::kMirror
+                                                         : Wrap::kRepeat;
 }
 
 // One component of an accessor's element, as a double (normalised integers to [0, 1] or
@@ -81,7 +90,8 @@ class GltfReader {
                        const std::string& where);
     void add_camera(int camera, const glm::dmat4& world, const std::string& where);
     void add_light(const tinygltf::Value& ext, const glm::dmat4& world, const std::string& where);
-    Material material(int index) const;
+    Material material(int index);
+    std::uint32_t texture(int index, const std::string& where);
     // An accessor's elements of `width` components each, checked against its buffer.
     std::vector<double> elements(int accessor, int width, const std::string& where) const;
     void finish();
@@ -94,6 +104,9 @@ class GltfReader {
     std::vector<glm::dvec3> positions_;  // in the file's coordinates, before the origin
     std::vector<glm::dvec3> normals_;    // per corner, or empty per triangle (flat)
     std::vector<bool> has_normals_;      // per triangle
+    std::vector<glm::vec2> uvs_;         // per corner, (0, 0) where a primitive has none
+    bool any_uvs_ = false;
+    std::map<int, std::uint32_t> texture_of_;  // glTF texture -> MeshFile::textures
     std::vector<glm::dvec3> camera_eyes_;
     struct PendingLight {
         Light light;
@@ -106,7 +119,7 @@ class GltfReader {
 
 void GltfReader::parse() {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(skip_image, nullptr);
+    loader.SetImageLoader(keep_encoded, nullptr);
     std::string err, warn;
     const bool binary = lower_extension(path_) == ".glb";
     const bool ok = binary ? loader.LoadBinaryFromFile(&model_, &err, &warn, file_)
@@ -270,6 +283,13 @@ void GltfReader::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& w
         if (normals.size() != xyz.size())
             fail(at("accessors", n->second), "not one normal a vertex");
     }
+    std::vector<double> uv;
+    if (const auto t = p.attributes.find("TEXCOORD_0"); t != p.attributes.end()) {
+        uv = elements(t->second, 2, where + "/attributes/TEXCOORD_0");
+        if (uv.size() / 2 != vertices)
+            fail(at("accessors", t->second), "not one coordinate a vertex");
+        any_uvs_ = true;
+    }
     const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
     const auto base = static_cast<std::uint32_t>(positions_.size());
     for (std::size_t v = 0; v < vertices; ++v)
@@ -285,6 +305,7 @@ void GltfReader::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& w
         has_normals_.push_back(!normals.empty());
         for (int k = 0; k < 3; ++k) {
             const std::size_t v = corners[c + static_cast<std::size_t>(k)];
+            uvs_.push_back(uv.empty() ? glm::vec2(0.0f) : glm::vec2(uv[2 * v], uv[2 * v + 1]));
             normals_.push_back(normals.empty()
                                    ? glm::dvec3(0.0)
                                    : normal_matrix * glm::dvec3(normals[3 * v], normals[3 * v + 1],
@@ -339,7 +360,34 @@ void GltfReader::add_light(const tinygltf::Value& ext, const glm::dmat4& world,
 }
 
 // glTF's metallic-roughness material as the tutorial's Phong terms (docs/scene-format.md).
-Material GltfReader::material(int index) const {
+// The base colour texture `index` as one of the MeshFile's textures (read once).
+std::uint32_t GltfReader::texture(int index, const std::string& where) {
+    if (const auto known = texture_of_.find(index); known != texture_of_.end())
+        return known->second;
+    if (index < 0 || index >= static_cast<int>(model_.textures.size()))
+        fail(where, "no such texture " + std::to_string(index));
+    const tinygltf::Texture& t = model_.textures[static_cast<std::size_t>(index)];
+    if (t.source < 0 || t.source >= static_cast<int>(model_.images.size()))
+        fail(at("textures", index), "no image (or one the file does not have)");
+    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(t.source)];
+    const std::string image_where = at("images", t.source);
+    std::string extension = image.mimeType == "image/jpeg"  ? ".jpg"
+                            : image.mimeType == "image/png" ? ".png"
+                                                            : lower_extension(image.uri);
+    if (extension.empty() || extension.size() > 5) extension = ".png";
+    Texture texture = decode_texture(image.image, extension, file_, image_where);
+    if (t.sampler >= 0 && t.sampler < static_cast<int>(model_.samplers.size())) {
+        const tinygltf::Sampler& s = model_.samplers[static_cast<std::size_t>(t.sampler)];
+        texture.wrap_u = wrap_mode(s.wrapS);
+        texture.wrap_v = wrap_mode(s.wrapT);
+    }
+    const auto slot = static_cast<std::uint32_t>(scene_.geometry.textures.size());
+    scene_.geometry.textures.push_back(std::move(texture));
+    texture_of_[index] = slot;
+    return slot;
+}
+
+Material GltfReader::material(int index) {
     const tinygltf::Material& g = model_.materials[static_cast<std::size_t>(index)];
     const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
     vec3 base(1.0f);
@@ -358,6 +406,13 @@ Material GltfReader::material(int index) const {
     m.ks = glm::mix(vec3(0.04f), base, metallic);
     const float alpha = std::max(roughness * roughness, 0.03f);  // GGX's alpha
     m.shininess = std::clamp(2.0f / (alpha * alpha) - 2.0f, 1.0f, 2000.0f);
+    if (pbr.baseColorTexture.index >= 0) {
+        if (pbr.baseColorTexture.texCoord != 0)
+            warn(at("materials", index),
+                 "texture coordinates other than TEXCOORD_0: TEXCOORD_0 used");
+        m.texture = texture(pbr.baseColorTexture.index,
+                            at("materials", index) + "/pbrMetallicRoughness/baseColorTexture");
+    }
     if (g.emissiveFactor.size() == 3)
         m.emission = vec3(g.emissiveFactor[0], g.emissiveFactor[1], g.emissiveFactor[2]);
     if (const auto t = g.extensions.find("KHR_materials_transmission"); t != g.extensions.end())
@@ -401,6 +456,7 @@ void GltfReader::finish() {
             }
         }
     }
+    if (any_uvs_) g.mesh.corner_uvs = std::move(uvs_);
     for (std::size_t i = 0; i < scene_.cameras.size(); ++i)
         scene_.cameras[i].eye = vec3(camera_eyes_[i] - g.origin);
     double brightest = 0.0;

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <limits>
 
+#include <glm/vec2.hpp>
+
 #include "core/ray.h"
 
 namespace rt {
@@ -30,6 +32,7 @@ struct SurfacePoint {
     vec3 normal{0.0f, 1.0f, 0.0f};  // shading normal
     std::uint32_t material = 0;
     vec3 pattern_point{0.0f};  // where a checker is evaluated (object space)
+    glm::vec2 uv{0.0f};        // where a texture is sampled (core/texture.h)
 };
 
 }  // namespace rt

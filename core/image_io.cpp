@@ -1,9 +1,11 @@
 // The only file of core that touches OpenImageIO.
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "core/error.h"
 #include "core/file_kind.h"
 #include "core/image.h"
+#include "core/texture.h"
 
 namespace rt {
 
@@ -59,6 +61,55 @@ Image read_image(const std::filesystem::path& path) {
         }
     }
     return image;
+}
+
+namespace {
+
+// Eight bits a channel, sRGB decoded through the same table GL's SRGB8 formats use; a
+// grey image is grey, alpha is dropped.
+Texture texture_from(OIIO::ImageInput& in, const std::string& name, const std::string& file,
+                     const std::string& where) {
+    const OIIO::ImageSpec& spec = in.spec();
+    constexpr long long kMaxTexels = 1ll << 26;  // 8192 x 8192
+    if (spec.width <= 0 || spec.height <= 0 ||
+        static_cast<long long>(spec.width) * spec.height > kMaxTexels)
+        throw Error(file, where,
+                    "the image is " + std::to_string(spec.width) + " x " +
+                        std::to_string(spec.height) + " (at most 8192 x 8192)");
+    const int channels = spec.nchannels;
+    std::vector<unsigned char> data(static_cast<std::size_t>(spec.width) * spec.height * channels);
+    if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, data.data()))
+        throw Error(file, where, in.geterror());
+    Texture t;
+    t.name = name;
+    t.width = spec.width;
+    t.height = spec.height;
+    t.texels.resize(static_cast<std::size_t>(t.width) * t.height);
+    for (std::size_t i = 0; i < t.texels.size(); ++i) {
+        const unsigned char* px = &data[i * static_cast<std::size_t>(channels)];
+        const auto c = [&](int k) { return px[std::min(k, channels - 1)]; };
+        t.texels[i] = channels < 3 ? from_srgb8(c(0), c(0), c(0)) : from_srgb8(c(0), c(1), c(2));
+    }
+    return t;
+}
+
+}  // namespace
+
+Texture read_texture(const std::filesystem::path& path, const std::string& file,
+                     const std::string& where) {
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in)
+        throw Error(file, where,
+                    "cannot read the image \"" + path.string() + "\": " + OIIO::geterror());
+    return texture_from(*in, path.string(), file, where);
+}
+
+Texture decode_texture(const std::vector<unsigned char>& bytes, const std::string& extension,
+                       const std::string& file, const std::string& where) {
+    OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+    auto in = OIIO::ImageInput::open("image" + extension, nullptr, &reader);
+    if (!in) throw Error(file, where, "cannot decode the image: " + OIIO::geterror());
+    return texture_from(*in, file + ": " + where, file, where);
 }
 
 }  // namespace rt

@@ -2,6 +2,7 @@
 // One material feeds the tracer and, later, the GL uniforms: a single source of truth.
 
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -46,6 +47,8 @@ struct Material {
     float transparency = 0.0f;
     float ior = 1.5f;     // index of refraction (outside is air, 1.0)
     vec3 emission{0.0f};  // added as it is, lit or not (glTF's emissive)
+    // The scene's texture (Scene::textures) that multiplies ka and kd, as a checker does.
+    std::optional<std::uint32_t> texture;
     std::optional<Checker> checker;
 };
 

@@ -54,7 +54,7 @@ std::size_t TriangleMesh::accel_memory_bytes() const {
 std::size_t TriangleMesh::memory_bytes() const {
     return positions.size() * sizeof(vec3) + triangles.size() * sizeof(glm::uvec3) +
            corner_normals.size() * sizeof(vec3) + materials.size() * sizeof(std::uint32_t) +
-           accel_memory_bytes();
+           corner_uvs.size() * sizeof(glm::vec2) + accel_memory_bytes();
 }
 
 bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
@@ -99,6 +99,12 @@ vec3 TriangleMesh::shading_normal(const Hit& hit) const {
     return (1.0f - hit.b1 - hit.b2) * n[0] + hit.b1 * n[1] + hit.b2 * n[2];
 }
 
+glm::vec2 TriangleMesh::uv(const Hit& hit) const {
+    if (corner_uvs.empty()) return glm::vec2(0.0f);
+    const glm::vec2* t = &corner_uvs[3 * std::size_t{hit.prim}];
+    return (1.0f - hit.b1 - hit.b2) * t[0] + hit.b1 * t[1] + hit.b2 * t[2];
+}
+
 vec3 TriangleMesh::point(const Hit& hit) const {
     const glm::uvec3 idx = triangles[hit.prim];
     return (1.0f - hit.b1 - hit.b2) * positions[idx[0]] + hit.b1 * positions[idx[1]] +
@@ -140,6 +146,7 @@ std::size_t drop_duplicate_triangles(TriangleMesh& mesh) {
     std::unordered_set<Key, KeyHash> seen;
     std::size_t kept = 0;
     const bool normals = !mesh.corner_normals.empty(), materials = !mesh.materials.empty();
+    const bool uvs = !mesh.corner_uvs.empty();
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         std::uint32_t v[3] = {weld[mesh.triangles[t][0]], weld[mesh.triangles[t][1]],
                               weld[mesh.triangles[t][2]]};
@@ -151,12 +158,15 @@ std::size_t drop_duplicate_triangles(TriangleMesh& mesh) {
             for (int k = 0; k < 3; ++k)
                 mesh.corner_normals[3 * kept + k] = mesh.corner_normals[3 * t + k];
         if (materials) mesh.materials[kept] = mesh.materials[t];
+        if (uvs)
+            for (int k = 0; k < 3; ++k) mesh.corner_uvs[3 * kept + k] = mesh.corner_uvs[3 * t + k];
         ++kept;
     }
     const std::size_t dropped = mesh.triangles.size() - kept;
     mesh.triangles.resize(kept);
     if (normals) mesh.corner_normals.resize(3 * kept);
     if (materials) mesh.materials.resize(kept);
+    if (uvs) mesh.corner_uvs.resize(3 * kept);
     return dropped;
 }
 

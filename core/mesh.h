@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/accel.h"
@@ -21,6 +22,7 @@ struct TriangleMesh {
     std::vector<glm::uvec3> triangles;     // indices into positions
     std::vector<vec3> corner_normals;      // 3 per triangle (smooth shading); empty: flat
     std::vector<std::uint32_t> materials;  // per triangle, scene material index; may be empty
+    std::vector<glm::vec2> corner_uvs;     // 3 per triangle (core/texture.h's convention), or empty
     // Line segments and points (OBJ `l` and `p`), indices into positions: the raster view
     // draws them; the tracer, which renders surfaces, does not see them.
     std::vector<glm::uvec2> segments;
@@ -39,7 +41,8 @@ struct TriangleMesh {
     // The hit's shading normal (interpolated, or the face normal) and face normal, unnormalised.
     vec3 face_normal(std::uint32_t tri) const;
     vec3 shading_normal(const Hit& hit) const;
-    vec3 point(const Hit& hit) const;  // rebuilt from barycentrics: more exact than o + d t
+    vec3 point(const Hit& hit) const;    // rebuilt from barycentrics: more exact than o + d t
+    glm::vec2 uv(const Hit& hit) const;  // interpolated; (0, 0) where the mesh has none
 
   private:
     Aabb bounds_;
@@ -62,7 +65,7 @@ struct MeshInstance {
     bool occluded(const Ray& r, float t_max) const { return mesh.occluded(r, t_max); }
     LocalSurface surface(const Ray&, const Hit& hit) const {
         LocalSurface s{mesh.point(hit), mesh.face_normal(hit.prim), mesh.shading_normal(hit),
-                       std::nullopt};
+                       std::nullopt, mesh.uv(hit)};
         if (own_materials && !mesh.materials.empty()) s.material = mesh.materials[hit.prim];
         return s;
     }

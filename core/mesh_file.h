@@ -13,6 +13,7 @@
 
 #include "core/material.h"
 #include "core/mesh.h"
+#include "core/texture.h"
 
 namespace rt {
 
@@ -28,7 +29,8 @@ struct MeshFileOptions {
 
 struct MeshFile {
     TriangleMesh mesh;  // mesh.materials index `materials`; kNoFileMaterial where none was named
-    std::vector<Material> materials;
+    std::vector<Material> materials;    // Material::texture indexes `textures`
+    std::vector<Texture> textures;
     std::vector<std::string> warnings;  // "FILE: WHERE: WHAT" lines for what was skipped
     glm::dvec3 origin{0.0};             // where the positions' zero is, in the file's coordinates
 };

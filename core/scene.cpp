@@ -31,7 +31,13 @@ Scene::Scene(SceneDescription d, AccelKind kind)
       lights(std::move(d.lights)),
       materials(std::move(d.materials)),
       meshes(built(std::move(d.meshes), kind)),
-      objects(std::move(d.objects)) {
+      objects(std::move(d.objects)),
+      textures(std::move(d.textures)) {
+    for (const Material& m : materials)
+        if (m.texture && *m.texture >= textures.size())
+            throw std::invalid_argument("Scene: material \"" + m.name + "\" names texture " +
+                                        std::to_string(*m.texture) + " of " +
+                                        std::to_string(textures.size()));
     std::vector<Aabb> boxes;
     for (std::uint32_t i = 0; i < objects.size(); ++i) {
         if (std::holds_alternative<Plane>(objects[i].shape)) {
@@ -51,7 +57,7 @@ Scene::Scene(SceneDescription d, AccelKind kind)
 }
 
 SceneDescription Scene::description() const {
-    return {camera, background, ambient, origin, lights, materials, meshes, objects};
+    return {camera, background, ambient, origin, lights, materials, meshes, objects, textures};
 }
 
 bool Scene::intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const {
@@ -115,6 +121,7 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
         return s;
     });
     sp.material = ls.material.value_or(o.material);
+    sp.uv = ls.uv;
     sp.pattern_point += pattern_shift(hit.object, sp.material);
     vec3 p = ls.p, ng = ls.geometric_normal, ns = ls.normal;
     if (o.transform) {

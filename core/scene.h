@@ -18,6 +18,7 @@
 #include "core/material.h"
 #include "core/mesh.h"
 #include "core/shapes.h"
+#include "core/texture.h"
 #include "core/transform.h"
 
 namespace rt {
@@ -48,6 +49,7 @@ struct SceneDescription {
     std::vector<Material> materials;
     std::vector<TriangleMesh> meshes;  // the Scene builds them
     std::vector<Object> objects;
+    std::vector<Texture> textures;  // Material::texture indexes them
 };
 
 class Scene {
@@ -67,6 +69,7 @@ class Scene {
     const std::vector<Material> materials;
     const std::vector<TriangleMesh> meshes;  // built
     const std::vector<Object> objects;
+    const std::vector<Texture> textures;
 
     AccelKind accel_kind() const { return top_.kind(); }
     // The description this scene was built from (a copy): to change a scene, change

@@ -17,6 +17,14 @@ namespace {
 
 constexpr int kMaxResolution = 16384;
 
+// A mesh file's textures join the scene's; its materials' texture indices follow them.
+void append_textures(MeshFile& mesh, SceneDescription& scene) {
+    const auto first = static_cast<std::uint32_t>(scene.textures.size());
+    for (Texture& t : mesh.textures) scene.textures.push_back(std::move(t));
+    for (Material& m : mesh.materials)
+        if (m.texture) *m.texture += first;
+}
+
 // Beyond this distance from the origin (in any coordinate) a scene is read relative to
 // a point of its own: its eye (JSON) or its centre (a bare mesh). Nearer, float's
 // precision is ample and the scene is read as it is, bit for bit.
@@ -313,6 +321,7 @@ std::uint32_t JsonSceneReader::load_mesh(const JsonValue& file_value, bool in_wo
     if (key.second) options.origin = origin_;
     MeshFile obj = load_mesh_file(mesh_path, options);
     const auto first_material = static_cast<std::uint32_t>(scene_.materials.size());
+    append_textures(obj, scene_);
     for (Material& m : obj.materials) {
         m.name = mesh_path.filename().string() + ":" + m.name;
         scene_.materials.push_back(std::move(m));
@@ -415,6 +424,7 @@ static LoadedScene bare_mesh_scene(const std::filesystem::path& path, MeshFile m
     out.scene.origin = mesh.origin;
     SceneDescription& scene = out.scene;
     scene.materials = material_presets();
+    append_textures(mesh, scene);
     for (Material& m : mesh.materials) scene.materials.push_back(std::move(m));
     const auto presets = static_cast<std::uint32_t>(material_presets().size());
     for (std::uint32_t& m : mesh.mesh.materials) m = m < mesh.materials.size() ? presets + m : 0;

@@ -90,7 +90,7 @@ LocalSurface Sphere::surface(const Ray& r, const Hit& hit) const {
     // Projected back onto the sphere: the point is then as exact as floats allow, which
     // the ray offset relies on.
     const vec3 n = glm::normalize(r.at(hit.t) - centre);
-    return LocalSurface{centre + radius * n, n, n, std::nullopt};
+    return LocalSurface{centre + radius * n, n, n, std::nullopt, glm::vec2(0.0f)};
 }
 
 bool Plane::intersect(const Ray& r, Hit& hit) const { return replace_hit(*this, r, hit); }
@@ -102,7 +102,7 @@ bool Plane::occluded(const Ray& r, float t_max) const {
 LocalSurface Plane::surface(const Ray& r, const Hit& hit) const {
     vec3 p = r.at(hit.t);
     p -= (glm::dot(p, normal) - offset) * normal;  // back onto the plane
-    return LocalSurface{p, normal, normal, std::nullopt};
+    return LocalSurface{p, normal, normal, std::nullopt, glm::vec2(0.0f)};
 }
 
 Aabb Triangle::bounds() const {
@@ -125,7 +125,8 @@ bool Triangle::occluded(const Ray& r, float t_max) const {
 
 LocalSurface Triangle::surface(const Ray&, const Hit& hit) const {
     const vec3 n = glm::cross(b - a, c - a);
-    return LocalSurface{(1.0f - hit.b1 - hit.b2) * a + hit.b1 * b + hit.b2 * c, n, n, std::nullopt};
+    return LocalSurface{(1.0f - hit.b1 - hit.b2) * a + hit.b1 * b + hit.b2 * c, n, n, std::nullopt,
+                        glm::vec2(0.0f)};
 }
 
 void tangent_frame(const vec3& n, vec3& t1, vec3& t2) {

@@ -15,6 +15,7 @@
 #include <optional>
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/aabb.h"
@@ -34,6 +35,7 @@ struct LocalSurface {
     vec3 geometric_normal{0.0f, 1.0f, 0.0f};
     vec3 normal{0.0f, 1.0f, 0.0f};
     std::optional<std::uint32_t> material;  // a mesh's own material for the hit triangle
+    glm::vec2 uv{0.0f};                     // texture coordinates (meshes that have them)
 };
 
 struct Sphere {

@@ -88,6 +88,7 @@ TriangleMesh triangles_of(const MeshInstance& m, int) {
     mesh.positions = m.mesh.positions;
     mesh.triangles = m.mesh.triangles;
     mesh.corner_normals = m.mesh.corner_normals;
+    mesh.corner_uvs = m.mesh.corner_uvs;
     if (m.own_materials) mesh.materials = m.mesh.materials;
     return mesh;
 }

@@ -106,7 +106,8 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) cons
 // With `feelers` off every light in front of the surface counts as seen.
 vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool feelers) const {
     const Material& m = scene_.materials[sp.material];
-    const vec3 pattern = m.checker ? m.checker->at(sp.pattern_point) : vec3(1.0f);
+    vec3 pattern = m.checker ? m.checker->at(sp.pattern_point) : vec3(1.0f);
+    if (m.texture) pattern *= scene_.textures[*m.texture].sample(sp.uv);
     vec3 colour = m.emission + m.ka * pattern * scene_.ambient;
     const vec3 to_viewer = -glm::normalize(r.dir);
     const vec3 p = offset_ray_origin(sp.p, sp.geometric_normal);

@@ -3,7 +3,8 @@
 //   I = ka Ia + sum_l (kd max(0, n.l) + ks max(0, r.v)^shininess) I_l
 // Same materials, lights, checker and normal rules as core/tracer.cpp and core/scene.cpp.
 
-// Compiled with SHADOW_MAPS and ENV_MAPS 0 or 1 (app/gl/program.h says why not uniforms).
+// Compiled with SHADOW_MAPS, ENV_MAPS and TEXTURES 0 or 1 (app/gl/program.h says why not
+// uniforms).
 
 const int kMaxLights = 16;  // RasterRenderer::kMaxLights
 #ifndef SHADOW_MAPS
@@ -12,12 +13,16 @@ const int kMaxLights = 16;  // RasterRenderer::kMaxLights
 #ifndef ENV_MAPS
 #define ENV_MAPS 0
 #endif
+#ifndef TEXTURES
+#define TEXTURES 0
+#endif
 
 in vec3 v_local;
 in vec3 v_world;
 in vec3 v_object;
 in vec3 v_normal;
 in vec3 v_face_normal;
+in vec2 v_uv;
 
 uniform mat3 u_normal_matrix;
 uniform mat4 u_shape;
@@ -51,6 +56,10 @@ uniform float u_kt;   // transparency
 uniform float u_ior;
 
 uniform vec3 u_emission;
+// The material's texture multiplies ka and kd as the checker does (core/texture.h: both
+// pipelines filter the same linear texels bilinearly at level 0).
+uniform int u_textured;
+uniform sampler2D u_texture;
 uniform vec3 u_ka;
 uniform vec3 u_kd;
 uniform vec3 u_ks;
@@ -166,6 +175,9 @@ void main() {
     vec3 n = dot(ns, ng) > 0.0 ? ns : ng;
 
     vec3 c = pattern(s.object);
+#if TEXTURES == 1
+    if (u_textured == 1) c *= texture(u_texture, v_uv).rgb;
+#endif
     vec3 colour = u_emission + u_ka * c * u_ambient;
     for (int i = 0; i < u_light_count; ++i) {
         vec3 to_light = u_light_directional[i] == 1 ? -u_light_vector[i] : u_light_vector[i] - s.world;

@@ -14,6 +14,7 @@ struct GpuMesh::Vertex {
     glm::vec3 position;
     glm::vec3 normal;
     glm::vec3 face_normal;
+    glm::vec2 uv{0.0f};
 };
 
 namespace {
@@ -35,7 +36,10 @@ GpuMesh::GpuMesh(const TriangleMesh& mesh, bool smooth_faces) {
         const glm::vec3 face = mesh.face_normal(t);
         for (int k = 0; k < 3; ++k) {
             const glm::vec3 n = mesh.corner_normals.empty() ? face : mesh.corner_normals[3 * t + k];
-            vertices.push_back({mesh.positions[mesh.triangles[t][k]], n, smooth_faces ? n : face});
+            const glm::vec2 uv =
+                mesh.corner_uvs.empty() ? glm::vec2(0.0f) : mesh.corner_uvs[3 * t + k];
+            vertices.push_back(
+                {mesh.positions[mesh.triangles[t][k]], n, smooth_faces ? n : face, uv});
         }
     }
     upload(vertices);
@@ -44,7 +48,8 @@ GpuMesh::GpuMesh(const TriangleMesh& mesh, bool smooth_faces) {
 GpuMesh::GpuMesh(const std::vector<glm::vec3>& positions, GLenum mode) : mode_(mode) {
     std::vector<Vertex> vertices;
     vertices.reserve(positions.size());
-    for (const glm::vec3& p : positions) vertices.push_back({p, glm::vec3(0.0f), glm::vec3(0.0f)});
+    for (const glm::vec3& p : positions)
+        vertices.push_back({p, glm::vec3(0.0f), glm::vec3(0.0f), glm::vec2(0.0f)});
     upload(vertices);
 }
 
@@ -56,10 +61,10 @@ void GpuMesh::upload(const std::vector<Vertex>& vertices) {
     glBindBuffer(GL_ARRAY_BUFFER, vbo_.get());
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                  vertices.data(), GL_STATIC_DRAW);
-    for (GLuint a = 0; a < 3; ++a) {
+    for (GLuint a = 0; a < 4; ++a) {  // position, normal, face normal, uv
         glEnableVertexAttribArray(a);
         glVertexAttribPointer(
-            a, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+            a, a < 3 ? 3 : 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
             reinterpret_cast<const void*>(static_cast<std::uintptr_t>(a * sizeof(glm::vec3))));
     }
     glBindVertexArray(0);

@@ -19,12 +19,14 @@ RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& 
       ids_(shaders / "raster.vert", shaders / "itembuffer.frag"),
       wire_(shaders / "raster.vert", shaders / "wire.frag"),
       shadow_(shaders / "raster.vert", shaders / "shadow.frag") {
+    for (const rt::Texture& t : scene.textures) textures_.emplace_back().upload_surface(t);
     phong(false, false);  // a shader that does not compile fails here, not at the first frame
 }
 
 Program& RasterRenderer::phong(bool shadow_maps, bool environment_maps) {
     return phong_variants_.get({std::string("SHADOW_MAPS ") + (shadow_maps ? "1" : "0"),
-                                std::string("ENV_MAPS ") + (environment_maps ? "1" : "0")});
+                                std::string("ENV_MAPS ") + (environment_maps ? "1" : "0"),
+                                std::string("TEXTURES ") + (textures_.empty() ? "0" : "1")});
 }
 
 void RasterRenderer::set_camera(Program& program, const Camera& camera) {
@@ -46,6 +48,13 @@ void RasterRenderer::set_object(Program& program, const DrawItem& item, const Ca
 
 void RasterRenderer::set_material(const Material& m, const DrawItem& item) {
     phong_->set("u_emission", m.emission);
+    phong_->set("u_textured", m.texture ? 1 : 0);
+    if (m.texture) {
+        glActiveTexture(GL_TEXTURE2);
+        glBindTexture(GL_TEXTURE_2D, textures_[*m.texture].id());
+        glActiveTexture(GL_TEXTURE0);
+        phong_->set("u_texture", 2);
+    }
     phong_->set("u_ka", m.ka);
     phong_->set("u_kd", m.kd);
     phong_->set("u_ks", m.ks);

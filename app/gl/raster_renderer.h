@@ -10,6 +10,7 @@
 #include "app/gl/framebuffer.h"
 #include "app/gl/gpu_scene.h"
 #include "app/gl/program.h"
+#include "app/gl/texture.h"
 #include "core/explain.h"
 #include "core/image.h"
 #include "core/item_buffer.h"
@@ -65,7 +66,8 @@ class RasterRenderer {
     // The near and far planes these passes use for `camera`.
     DepthRange depth_range(const Camera& camera) const { return gpu_.depth_range(camera); }
 
-    // phong.frag compiled with or without each trick (compiled when first asked for).
+    // phong.frag compiled with or without each trick, and with texture lookups when the
+    // scene has textures (compiled when first asked for).
     Program& phong(bool shadow_maps, bool environment_maps);
 
   private:
@@ -83,6 +85,7 @@ class RasterRenderer {
 
     const Scene& scene_;
     GpuScene gpu_;
+    std::vector<Texture> textures_;   // the scene's surface textures
     ProgramVariants phong_variants_;  // with and without each trick (phong.frag)
     Program* phong_ = nullptr;        // the variant draw_scene() is drawing with
     Program ids_;

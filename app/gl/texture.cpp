@@ -27,6 +27,25 @@ void Texture::upload(const Image& image) {
     check("Texture::upload");
 }
 
+void Texture::upload_surface(const rt::Texture& texture) {
+    glBindTexture(GL_TEXTURE_2D, id_.get());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    width_ = texture.width;
+    height_ = texture.height;
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, width_, height_, 0, GL_RGB, GL_FLOAT,
+                 texture.texels.data());
+    const auto wrap = [](Wrap w) {
+        return w == Wrap::kClamp    ? GL_CLAMP_TO_EDGE
+               : w == Wrap::kMirror ? GL_MIRRORED_REPEAT
+                                    : GL_REPEAT;
+    };
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap(texture.wrap_u));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap(texture.wrap_v));
+    check("Texture::upload_surface");
+}
+
 void Texture::upload_row(const std::vector<vec3>& colours) {
     Image row(static_cast<int>(colours.size()), 1);
     row.pixels = colours;

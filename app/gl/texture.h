@@ -4,6 +4,7 @@
 #include "app/gl/gl.h"
 #include "app/gl/handle.h"
 #include "core/image.h"
+#include "core/texture.h"
 
 namespace rt::gl {
 
@@ -14,6 +15,9 @@ class Texture {
     void upload(const Image& image);
     // A row of colours (a palette or a colour map), sampled by index or by t in [0, 1].
     void upload_row(const std::vector<vec3>& colours);
+    // A surface's texture, filtered as core/texture.h says the tracer samples it:
+    // bilinear on the linear texels, level 0, its wrap modes; row 0 at t = 0.
+    void upload_surface(const rt::Texture& texture);
     GLuint id() const { return id_.get(); }
     int width() const { return width_; }
     int height() const { return height_; }
