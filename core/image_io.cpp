@@ -1,4 +1,9 @@
 // The only file of core that touches OpenImageIO.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
@@ -65,6 +70,41 @@ Image read_image(const std::filesystem::path& path) {
 
 namespace {
 
+// libpng and libjpeg write their own diagnostics to stderr before OpenImageIO reports the
+// error; the user sees one line, ours. Decoding runs while a scene loads, on one thread.
+class QuietStderr {
+  public:
+    QuietStderr() {
+        std::fflush(stderr);
+        saved_ = dup(STDERR_FILENO);
+        const int null = open("/dev/null", O_WRONLY);
+        if (null >= 0) {
+            dup2(null, STDERR_FILENO);
+            close(null);
+        }
+    }
+    ~QuietStderr() {
+        std::fflush(stderr);
+        if (saved_ >= 0) {
+            dup2(saved_, STDERR_FILENO);
+            close(saved_);
+        }
+    }
+    QuietStderr(const QuietStderr&) = delete;
+    QuietStderr& operator=(const QuietStderr&) = delete;
+
+  private:
+    int saved_ = -1;
+};
+
+// OpenImageIO's messages may run over several lines; the last says what went wrong.
+std::string last_line(std::string message) {
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+        message.pop_back();
+    const std::size_t nl = message.rfind('\n');
+    return nl == std::string::npos ? message : message.substr(nl + 1);
+}
+
 // Eight bits a channel, sRGB decoded through the same table GL's SRGB8 formats use; a
 // grey image is grey, alpha is dropped.
 Texture texture_from(OIIO::ImageInput& in, const std::string& name, const std::string& file,
@@ -79,7 +119,7 @@ Texture texture_from(OIIO::ImageInput& in, const std::string& name, const std::s
     const int channels = spec.nchannels;
     std::vector<unsigned char> data(static_cast<std::size_t>(spec.width) * spec.height * channels);
     if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, data.data()))
-        throw Error(file, where, in.geterror());
+        throw Error(file, where, last_line(in.geterror()));
     Texture t;
     t.name = name;
     t.width = spec.width;
@@ -97,18 +137,24 @@ Texture texture_from(OIIO::ImageInput& in, const std::string& name, const std::s
 
 Texture read_texture(const std::filesystem::path& path, const std::string& file,
                      const std::string& where) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error(file, where, "no image file \"" + path.string() + "\"");
+    const QuietStderr quiet;
     auto in = OIIO::ImageInput::open(path.string());
     if (!in)
-        throw Error(file, where,
-                    "cannot read the image \"" + path.string() + "\": " + OIIO::geterror());
+        throw Error(
+            file, where,
+            "cannot read the image \"" + path.string() + "\": " + last_line(OIIO::geterror()));
     return texture_from(*in, path.string(), file, where);
 }
 
 Texture decode_texture(const std::vector<unsigned char>& bytes, const std::string& extension,
                        const std::string& file, const std::string& where) {
+    const QuietStderr quiet;
     OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
     auto in = OIIO::ImageInput::open("image" + extension, nullptr, &reader);
-    if (!in) throw Error(file, where, "cannot decode the image: " + OIIO::geterror());
+    if (!in) throw Error(file, where, "cannot decode the image: " + last_line(OIIO::geterror()));
     return texture_from(*in, file + ": " + where, file, where);
 }
 

@@ -76,8 +76,10 @@ bool copy_triangles(const std::string& file, const tinyobj::attrib_t& attrib,
                     const std::vector<tinyobj::shape_t>& shapes, TriangleMesh& mesh) {
     const auto vertex_count = static_cast<long long>(mesh.positions.size());
     const auto normal_count = static_cast<long long>(attrib.normals.size() / 3);
-    bool all_normals = true;
+    const auto uv_count = static_cast<long long>(attrib.texcoords.size() / 2);
+    bool all_normals = true, any_uv = false;
     std::vector<vec3> normals;
+    std::vector<glm::vec2> uvs;
     for (const tinyobj::shape_t& shape : shapes) {
         const auto& idx = shape.mesh.indices;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
@@ -100,6 +102,13 @@ bool copy_triangles(const std::string& file, const tinyobj::attrib_t& attrib,
                     has_normal ? to_vec3(&attrib.normals[3 * corner.normal_index]) : vec3(0.0f);
                 all_normals = all_normals && finite(n) && glm::dot(n, n) > 0.0f;
                 normals.push_back(n);
+                // vt's v grows upwards; core/texture.h's downwards (glTF's, images' rows).
+                const bool has_uv = corner.texcoord_index >= 0 && corner.texcoord_index < uv_count;
+                const double* t = has_uv ? &attrib.texcoords[2 * corner.texcoord_index] : nullptr;
+                uvs.push_back(
+                    has_uv ? glm::vec2(static_cast<float>(t[0]), static_cast<float>(1.0 - t[1]))
+                           : glm::vec2(0.0f));
+                any_uv = any_uv || has_uv;
             }
             mesh.triangles.push_back(tri);
             const int material = shape.mesh.material_ids.empty() ? -1 : shape.mesh.material_ids[f];
@@ -111,6 +120,7 @@ bool copy_triangles(const std::string& file, const tinyobj::attrib_t& attrib,
         for (vec3& n : normals) n = glm::normalize(n);
         mesh.corner_normals = std::move(normals);
     }
+    if (any_uv) mesh.corner_uvs = std::move(uvs);
     return all_normals;
 }
 
@@ -274,7 +284,20 @@ MeshFile load_obj(const std::filesystem::path& path, const MeshFileOptions& opti
     MeshFile data;
     data.mesh.name = path.filename().string();
     add_warnings(file, warn, data.warnings);
-    for (const auto& m : materials) data.materials.push_back(from_mtl(m));
+    std::map<std::string, std::uint32_t> textures;  // map_Kd file -> data.textures
+    for (const auto& m : materials) {
+        data.materials.push_back(from_mtl(m));
+        if (m.diffuse_texname.empty()) continue;
+        auto [it, added] = textures.try_emplace(m.diffuse_texname,
+                                                static_cast<std::uint32_t>(data.textures.size()));
+        if (added) {
+            data.textures.push_back(read_texture(path.parent_path() / m.diffuse_texname, file,
+                                                 "material \"" + m.name + "\" map_Kd"));
+            if (m.diffuse_texopt.clamp)
+                data.textures.back().wrap_u = data.textures.back().wrap_v = Wrap::kClamp;
+        }
+        data.materials.back().texture = it->second;
+    }
     const glm::dvec3 centre = used_centre(attrib, shapes);
     if (options.origin)
         data.origin = *options.origin;

@@ -70,6 +70,8 @@ where_of() {
         gltf_node_cycle.gltf) echo "/nodes/0" ;;
         gltf_required_extension.gltf) echo "/extensionsRequired" ;;
         gltf_truncated.glb) echo "load" ;;
+        gltf_bad_image.gltf) echo "/images/0" ;;
+        texture_missing.obj) echo "material \"broken\" map_Kd" ;;
         *) echo "UNLISTED" ;;  # a new corpus file must say where its error is
     esac
 }

@@ -141,6 +141,52 @@ TEST_P(Gl, GltfModelsAgreeInBothPipelines) {
     }
 }
 
+// Textures show in both pipelines, and alike: a textured OBJ (the shipped textured
+// scene) and Khronos' textured box; with effects off the two agree inside objects, and
+// without their textures both pictures change over most of the textured surface.
+TEST_P(Gl, TexturesShowAlikeInBothPipelines) {
+    const auto dir = test::source_dir() / "tests" / "data" / "gltf" / "khronos";
+    for (const auto& file : {test::scene_path("textured.json"), dir / "BoxTextured.glb"}) {
+        LoadedScene loaded = load_scene(file);
+        loaded.scene.camera = loaded.scene.camera.resized(200, 150);
+        SceneDescription plain = loaded.scene;
+        for (Material& m : plain.materials) m.texture.reset();
+        const auto pictures = [&](SceneDescription d) {
+            const Scene scene(std::move(d));
+            gl::RasterRenderer raster(scene);
+            RenderOptions options;
+            options.trace.shadows = options.trace.reflections = options.trace.refractions = false;
+            return std::tuple{raster.render(scene.camera), render(scene, options),
+                              raster.render_item_buffer(scene.camera)};
+        };
+        const auto [r, t, ib] = pictures(loaded.scene);
+        const auto [r_plain, t_plain, ib_plain] = pictures(plain);
+        std::size_t textured = 0, off = 0, raster_changed = 0, traced_changed = 0;
+        const auto differ = [](const vec3& a, const vec3& b) {
+            float d = 0.0f;
+            for (int k = 0; k < 3; ++k)
+                d = std::max(d, std::fabs(srgb_encode(a[k]) - srgb_encode(b[k])));
+            return d > 2.0f / 255.0f;
+        };
+        for (int y = 0; y < r.height; ++y) {
+            for (int x = 0; x < r.width; ++x) {
+                const std::uint32_t id = ib.object[ib.index(x, y)];
+                if (!ib.interior(x, y) || id == ItemBuffer::kEmpty) continue;
+                const Object& o = loaded.scene.objects[id - 1];
+                if (!std::holds_alternative<MeshRef>(o.shape)) continue;  // the floor, the mirror
+                ++textured;
+                off += differ(r.at(x, y), t.at(x, y));
+                raster_changed += differ(r.at(x, y), r_plain.at(x, y));
+                traced_changed += differ(t.at(x, y), t_plain.at(x, y));
+            }
+        }
+        ASSERT_GT(textured, r.pixels.size() / 50) << file;
+        EXPECT_LE(static_cast<double>(off), 2e-3 * static_cast<double>(textured)) << file;
+        EXPECT_GT(raster_changed, textured / 2) << file << ": the raster shows no texture";
+        EXPECT_GT(traced_changed, textured / 2) << file << ": the tracer shows no texture";
+    }
+}
+
 // The explain map against the real raster image and item buffer, every shipped scene: the
 // terms add up to traced - raster at every pixel (1e-4 per channel), the traced colours
 // are the renderer's, and where the raster saw the tracer's object and the feelers

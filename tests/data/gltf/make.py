@@ -120,3 +120,10 @@ lit["nodes"] += [
     {"name": "spot", "translation": [0, 0, 10], "extensions": {"KHR_lights_punctual": {"light": 2}}}]
 lit["scenes"][0]["nodes"] += [3, 4, 5]
 write_json(os.path.join(here, "lights.gltf"), lit)
+
+# A base colour texture whose image is not an image.
+textured = model()[0]
+textured["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(b"\x89PNG\r\n\x1a\nnot really").decode()}]
+textured["textures"] = [{"source": 0}]
+textured["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
+write_json(os.path.join(bad, "gltf_bad_image.gltf"), textured)
