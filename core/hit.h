@@ -33,6 +33,7 @@ struct SurfacePoint {
     std::uint32_t material = 0;
     vec3 pattern_point{0.0f};  // where a checker is evaluated (object space)
     glm::vec2 uv{0.0f};        // where a texture is sampled (core/texture.h)
+    vec3 colour{1.0f};         // a mesh's vertex colour, multiplying ka and kd
 };
 
 }  // namespace rt

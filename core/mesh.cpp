@@ -54,7 +54,8 @@ std::size_t TriangleMesh::accel_memory_bytes() const {
 std::size_t TriangleMesh::memory_bytes() const {
     return positions.size() * sizeof(vec3) + triangles.size() * sizeof(glm::uvec3) +
            corner_normals.size() * sizeof(vec3) + materials.size() * sizeof(std::uint32_t) +
-           corner_uvs.size() * sizeof(glm::vec2) + accel_memory_bytes();
+           corner_uvs.size() * sizeof(glm::vec2) + corner_colours.size() * sizeof(vec3) +
+           accel_memory_bytes();
 }
 
 bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
@@ -105,6 +106,12 @@ glm::vec2 TriangleMesh::uv(const Hit& hit) const {
     return (1.0f - hit.b1 - hit.b2) * t[0] + hit.b1 * t[1] + hit.b2 * t[2];
 }
 
+vec3 TriangleMesh::colour(const Hit& hit) const {
+    if (corner_colours.empty()) return vec3(1.0f);
+    const vec3* c = &corner_colours[3 * std::size_t{hit.prim}];
+    return (1.0f - hit.b1 - hit.b2) * c[0] + hit.b1 * c[1] + hit.b2 * c[2];
+}
+
 vec3 TriangleMesh::point(const Hit& hit) const {
     const glm::uvec3 idx = triangles[hit.prim];
     return (1.0f - hit.b1 - hit.b2) * positions[idx[0]] + hit.b1 * positions[idx[1]] +
@@ -146,7 +153,7 @@ std::size_t drop_duplicate_triangles(TriangleMesh& mesh) {
     std::unordered_set<Key, KeyHash> seen;
     std::size_t kept = 0;
     const bool normals = !mesh.corner_normals.empty(), materials = !mesh.materials.empty();
-    const bool uvs = !mesh.corner_uvs.empty();
+    const bool uvs = !mesh.corner_uvs.empty(), colours = !mesh.corner_colours.empty();
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         std::uint32_t v[3] = {weld[mesh.triangles[t][0]], weld[mesh.triangles[t][1]],
                               weld[mesh.triangles[t][2]]};
@@ -160,6 +167,9 @@ std::size_t drop_duplicate_triangles(TriangleMesh& mesh) {
         if (materials) mesh.materials[kept] = mesh.materials[t];
         if (uvs)
             for (int k = 0; k < 3; ++k) mesh.corner_uvs[3 * kept + k] = mesh.corner_uvs[3 * t + k];
+        if (colours)
+            for (int k = 0; k < 3; ++k)
+                mesh.corner_colours[3 * kept + k] = mesh.corner_colours[3 * t + k];
         ++kept;
     }
     const std::size_t dropped = mesh.triangles.size() - kept;
@@ -167,6 +177,7 @@ std::size_t drop_duplicate_triangles(TriangleMesh& mesh) {
     if (normals) mesh.corner_normals.resize(3 * kept);
     if (materials) mesh.materials.resize(kept);
     if (uvs) mesh.corner_uvs.resize(3 * kept);
+    if (colours) mesh.corner_colours.resize(3 * kept);
     return dropped;
 }
 

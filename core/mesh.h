@@ -23,6 +23,7 @@ struct TriangleMesh {
     std::vector<vec3> corner_normals;      // 3 per triangle (smooth shading); empty: flat
     std::vector<std::uint32_t> materials;  // per triangle, scene material index; may be empty
     std::vector<glm::vec2> corner_uvs;     // 3 per triangle (core/texture.h's convention), or empty
+    std::vector<vec3> corner_colours;      // 3 per triangle (a PLY's vertex colours), or empty
     // Line segments and points (OBJ `l` and `p`), indices into positions: the raster view
     // draws them; the tracer, which renders surfaces, does not see them.
     std::vector<glm::uvec2> segments;
@@ -43,6 +44,7 @@ struct TriangleMesh {
     vec3 shading_normal(const Hit& hit) const;
     vec3 point(const Hit& hit) const;    // rebuilt from barycentrics: more exact than o + d t
     glm::vec2 uv(const Hit& hit) const;  // interpolated; (0, 0) where the mesh has none
+    vec3 colour(const Hit& hit) const;   // interpolated; white where the mesh has none
 
   private:
     Aabb bounds_;
@@ -64,8 +66,12 @@ struct MeshInstance {
     bool intersect(const Ray& r, Hit& hit) const { return mesh.intersect(r, hit); }
     bool occluded(const Ray& r, float t_max) const { return mesh.occluded(r, t_max); }
     LocalSurface surface(const Ray&, const Hit& hit) const {
-        LocalSurface s{mesh.point(hit), mesh.face_normal(hit.prim), mesh.shading_normal(hit),
-                       std::nullopt, mesh.uv(hit)};
+        LocalSurface s{mesh.point(hit),
+                       mesh.face_normal(hit.prim),
+                       mesh.shading_normal(hit),
+                       std::nullopt,
+                       mesh.uv(hit),
+                       mesh.colour(hit)};
         if (own_materials && !mesh.materials.empty()) s.material = mesh.materials[hit.prim];
         return s;
     }

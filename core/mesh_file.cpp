@@ -1,5 +1,6 @@
 #include "core/mesh_file.h"
 
+#include "core/assimp_loader.h"
 #include "core/error.h"
 #include "core/file_kind.h"
 #include "core/gltf_loader.h"
@@ -11,8 +12,9 @@ MeshFile load_mesh_file(const std::filesystem::path& path, const MeshFileOptions
     const std::string ext = lower_extension(path);
     if (ext == ".obj") return load_obj(path, options);
     if (ext == ".gltf" || ext == ".glb") return load_gltf(path, options).geometry;
+    if (ext == ".ply" || ext == ".stl") return load_ply_stl(path, options);
     throw Error(path.string(), "open",
-                "unknown mesh format \"" + ext + "\" (expected .obj, .gltf or .glb)");
+                "unknown mesh format \"" + ext + "\" (expected .obj, .gltf, .glb, .ply or .stl)");
 }
 
 }  // namespace rt

@@ -29,7 +29,7 @@ struct MeshFileOptions {
 
 struct MeshFile {
     TriangleMesh mesh;  // mesh.materials index `materials`; kNoFileMaterial where none was named
-    std::vector<Material> materials;    // Material::texture indexes `textures`
+    std::vector<Material> materials;  // Material::texture indexes `textures`
     std::vector<Texture> textures;
     std::vector<std::string> warnings;  // "FILE: WHERE: WHAT" lines for what was skipped
     glm::dvec3 origin{0.0};             // where the positions' zero is, in the file's coordinates
@@ -37,7 +37,8 @@ struct MeshFile {
 
 inline constexpr std::uint32_t kNoFileMaterial = 0xffffffffu;
 
-// By the file's extension: .obj (core/obj_loader.h), .gltf or .glb (core/gltf_loader.h).
+// By the file's extension: .obj (core/obj_loader.h), .gltf or .glb (core/gltf_loader.h),
+// .ply or .stl (core/assimp_loader.h).
 // Throws rt::Error naming the file on anything it cannot use.
 MeshFile load_mesh_file(const std::filesystem::path& path, const MeshFileOptions& options = {});
 

@@ -122,6 +122,7 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
     });
     sp.material = ls.material.value_or(o.material);
     sp.uv = ls.uv;
+    sp.colour = ls.colour;
     sp.pattern_point += pattern_shift(hit.object, sp.material);
     vec3 p = ls.p, ng = ls.geometric_normal, ns = ls.normal;
     if (o.transform) {

@@ -410,7 +410,7 @@ LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions&
     const glm::mat3 rotate = up_rotation(path, options.up);
     MeshFileOptions obj_options;
     obj_options.recentre_beyond = kFarFromOrigin;
-    MeshFile obj = load_obj(path, obj_options);
+    MeshFile obj = load_mesh_file(path, obj_options);  // .obj, .ply or .stl
     for (vec3& p : obj.mesh.positions) p = rotate * p;
     for (vec3& n : obj.mesh.corner_normals) n = rotate * n;
     return bare_mesh_scene(path, std::move(obj));
@@ -465,8 +465,10 @@ LoadedScene load_scene(const std::filesystem::path& path, const LoadOptions& opt
     if (ext == ".obj") return load_obj_scene(path, options);
     if (ext == ".json") return load_json_scene(path);
     if (ext == ".gltf" || ext == ".glb") return load_gltf_scene(path, options);
-    throw Error(path.string(), "open",
-                "unknown scene format \"" + ext + "\" (expected .json, .obj, .gltf or .glb)");
+    if (ext == ".ply" || ext == ".stl") return load_obj_scene(path, options);
+    throw Error(
+        path.string(), "open",
+        "unknown scene format \"" + ext + "\" (expected .json, .obj, .gltf, .glb, .ply or .stl)");
 }
 
 }  // namespace rt

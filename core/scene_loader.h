@@ -32,6 +32,7 @@ struct LoadOptions {
 // Throws rt::Error "FILE: WHERE: WHAT" on anything it cannot use.
 LoadedScene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 LoadedScene load_json_scene(const std::filesystem::path& path);
+// A bare mesh (.obj, .ply or .stl), framed and lit by default.
 LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 LoadedScene load_gltf_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 

@@ -90,7 +90,7 @@ LocalSurface Sphere::surface(const Ray& r, const Hit& hit) const {
     // Projected back onto the sphere: the point is then as exact as floats allow, which
     // the ray offset relies on.
     const vec3 n = glm::normalize(r.at(hit.t) - centre);
-    return LocalSurface{centre + radius * n, n, n, std::nullopt, glm::vec2(0.0f)};
+    return LocalSurface{centre + radius * n, n, n, std::nullopt, glm::vec2(0.0f), vec3(1.0f)};
 }
 
 bool Plane::intersect(const Ray& r, Hit& hit) const { return replace_hit(*this, r, hit); }
@@ -102,7 +102,7 @@ bool Plane::occluded(const Ray& r, float t_max) const {
 LocalSurface Plane::surface(const Ray& r, const Hit& hit) const {
     vec3 p = r.at(hit.t);
     p -= (glm::dot(p, normal) - offset) * normal;  // back onto the plane
-    return LocalSurface{p, normal, normal, std::nullopt, glm::vec2(0.0f)};
+    return LocalSurface{p, normal, normal, std::nullopt, glm::vec2(0.0f), vec3(1.0f)};
 }
 
 Aabb Triangle::bounds() const {

@@ -36,6 +36,7 @@ struct LocalSurface {
     vec3 normal{0.0f, 1.0f, 0.0f};
     std::optional<std::uint32_t> material;  // a mesh's own material for the hit triangle
     glm::vec2 uv{0.0f};                     // texture coordinates (meshes that have them)
+    vec3 colour{1.0f};                      // vertex colour (meshes that have them)
 };
 
 struct Sphere {

@@ -89,6 +89,7 @@ TriangleMesh triangles_of(const MeshInstance& m, int) {
     mesh.triangles = m.mesh.triangles;
     mesh.corner_normals = m.mesh.corner_normals;
     mesh.corner_uvs = m.mesh.corner_uvs;
+    mesh.corner_colours = m.mesh.corner_colours;
     if (m.own_materials) mesh.materials = m.mesh.materials;
     return mesh;
 }

@@ -108,6 +108,7 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool
     const Material& m = scene_.materials[sp.material];
     vec3 pattern = m.checker ? m.checker->at(sp.pattern_point) : vec3(1.0f);
     if (m.texture) pattern *= scene_.textures[*m.texture].sample(sp.uv);
+    pattern *= sp.colour;
     vec3 colour = m.emission + m.ka * pattern * scene_.ambient;
     const vec3 to_viewer = -glm::normalize(r.dir);
     const vec3 p = offset_ray_origin(sp.p, sp.geometric_normal);

@@ -11,6 +11,7 @@ packages=(
   nlohmann-json3-dev                  # scene files
   libtinyobjloader-dev                # OBJ + MTL meshes
   libtinygltf-dev                     # glTF 2.0 scenes
+  libassimp-dev                       # PLY and STL meshes
   libcli11-dev                        # command lines
   libgtest-dev                        # tests
   python3-glad                        # generates the OpenGL loader at build time

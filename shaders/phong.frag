@@ -23,6 +23,7 @@ in vec3 v_object;
 in vec3 v_normal;
 in vec3 v_face_normal;
 in vec2 v_uv;
+in vec3 v_colour;
 
 uniform mat3 u_normal_matrix;
 uniform mat4 u_shape;
@@ -174,7 +175,7 @@ void main() {
     ns = front ? ns : -ns;
     vec3 n = dot(ns, ng) > 0.0 ? ns : ng;
 
-    vec3 c = pattern(s.object);
+    vec3 c = pattern(s.object) * v_colour;
 #if TEXTURES == 1
     if (u_textured == 1) c *= texture(u_texture, v_uv).rgb;
 #endif

@@ -7,6 +7,7 @@ layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;       // shading normal
 layout(location = 2) in vec3 a_face_normal;  // geometric normal
 layout(location = 3) in vec2 a_uv;           // texture coordinates (core/texture.h)
+layout(location = 4) in vec3 a_colour;       // vertex colour (white where a mesh has none)
 
 uniform mat4 u_shape;
 uniform mat4 u_model;
@@ -19,6 +20,7 @@ out vec3 v_object;  // where the checker is evaluated, as in the tracer
 out vec3 v_normal;
 out vec3 v_face_normal;  // the same at all three corners of a mesh triangle
 out vec2 v_uv;
+out vec3 v_colour;
 
 void main() {
     vec4 object = u_shape * vec4(a_position, 1.0);
@@ -29,5 +31,6 @@ void main() {
     v_normal = u_normal_matrix * a_normal;
     v_face_normal = u_normal_matrix * a_face_normal;
     v_uv = a_uv;
+    v_colour = a_colour;
     gl_Position = u_view_projection * world;
 }

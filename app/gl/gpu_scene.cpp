@@ -1,6 +1,7 @@
 #include "app/gl/gpu_scene.h"
 
 #include <algorithm>
+#include <cstddef>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -15,6 +16,7 @@ struct GpuMesh::Vertex {
     glm::vec3 normal;
     glm::vec3 face_normal;
     glm::vec2 uv{0.0f};
+    glm::vec3 colour{1.0f};
 };
 
 namespace {
@@ -38,8 +40,10 @@ GpuMesh::GpuMesh(const TriangleMesh& mesh, bool smooth_faces) {
             const glm::vec3 n = mesh.corner_normals.empty() ? face : mesh.corner_normals[3 * t + k];
             const glm::vec2 uv =
                 mesh.corner_uvs.empty() ? glm::vec2(0.0f) : mesh.corner_uvs[3 * t + k];
+            const glm::vec3 colour =
+                mesh.corner_colours.empty() ? glm::vec3(1.0f) : mesh.corner_colours[3 * t + k];
             vertices.push_back(
-                {mesh.positions[mesh.triangles[t][k]], n, smooth_faces ? n : face, uv});
+                {mesh.positions[mesh.triangles[t][k]], n, smooth_faces ? n : face, uv, colour});
         }
     }
     upload(vertices);
@@ -49,7 +53,7 @@ GpuMesh::GpuMesh(const std::vector<glm::vec3>& positions, GLenum mode) : mode_(m
     std::vector<Vertex> vertices;
     vertices.reserve(positions.size());
     for (const glm::vec3& p : positions)
-        vertices.push_back({p, glm::vec3(0.0f), glm::vec3(0.0f), glm::vec2(0.0f)});
+        vertices.push_back({p, glm::vec3(0.0f), glm::vec3(0.0f), glm::vec2(0.0f), glm::vec3(1.0f)});
     upload(vertices);
 }
 
@@ -61,11 +65,13 @@ void GpuMesh::upload(const std::vector<Vertex>& vertices) {
     glBindBuffer(GL_ARRAY_BUFFER, vbo_.get());
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                  vertices.data(), GL_STATIC_DRAW);
-    for (GLuint a = 0; a < 4; ++a) {  // position, normal, face normal, uv
+    const std::size_t offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal),
+                                   offsetof(Vertex, face_normal), offsetof(Vertex, uv),
+                                   offsetof(Vertex, colour)};
+    for (GLuint a = 0; a < 5; ++a) {  // position, normal, face normal, uv, colour
         glEnableVertexAttribArray(a);
-        glVertexAttribPointer(
-            a, a < 3 ? 3 : 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
-            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(a * sizeof(glm::vec3))));
+        glVertexAttribPointer(a, a == 3 ? 2 : 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                              reinterpret_cast<const void*>(offsets[a]));
     }
     glBindVertexArray(0);
     check("GpuMesh upload");

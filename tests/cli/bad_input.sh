@@ -71,11 +71,14 @@ where_of() {
         gltf_required_extension.gltf) echo "/extensionsRequired" ;;
         gltf_truncated.glb) echo "load" ;;
         gltf_bad_image.gltf) echo "/images/0" ;;
+        ply_truncated.ply) echo "parse" ;;
+        stl_truncated.stl) echo "parse" ;;
         texture_missing.obj) echo "material \"broken\" map_Kd" ;;
         *) echo "UNLISTED" ;;  # a new corpus file must say where its error is
     esac
 }
-for path in "$corpus"/*.json "$corpus"/*.obj "$corpus"/*.gltf "$corpus"/*.glb; do
+for path in "$corpus"/*.json "$corpus"/*.obj "$corpus"/*.gltf "$corpus"/*.glb "$corpus"/*.ply \
+    "$corpus"/*.stl; do
     name=$(basename "$path")
     case $name in
         index_out_of_range.obj) continue ;;           # a part of mesh_index_out_of_range.json

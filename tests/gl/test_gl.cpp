@@ -106,14 +106,17 @@ TEST_P(Gl, RasterEqualsLocalTracingAwayFromSilhouettes) {
     }
 }
 
-// glTF files (Khronos' samples and a hand-made hierarchy with lights) pass the same
-// cross-validation as the JSON scenes: with the effects off, the raster and the tracer
-// agree inside every object, and the objects are in the picture.
-TEST_P(Gl, GltfModelsAgreeInBothPipelines) {
+// Model files (Khronos' glTF samples, a hand-made glTF hierarchy with lights, a PLY with
+// vertex colours, an STL) pass the same cross-validation as the JSON scenes: with the
+// effects off, the raster and the tracer agree inside every object, and the objects are
+// in the picture.
+TEST_P(Gl, ModelFilesAgreeInBothPipelines) {
     const auto dir = test::source_dir() / "tests" / "data" / "gltf";
     for (const auto& file :
          {dir / "khronos" / "Cube" / "Cube.gltf", dir / "khronos" / "BoxTextured.glb",
-          dir / "khronos" / "Cameras" / "Cameras.gltf", dir / "lights.gltf"}) {
+          dir / "khronos" / "Cameras" / "Cameras.gltf", dir / "lights.gltf",
+          dir / ".." / "mesh" / "octahedron_binary.ply",
+          dir / ".." / "mesh" / "octahedron_ascii.stl"}) {
         LoadedScene loaded = load_scene(file);
         loaded.scene.camera = loaded.scene.camera.resized(200, 150);
         const Scene scene(std::move(loaded.scene));

@@ -1,0 +1,108 @@
+#include "core/assimp_loader.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <assimp/Importer.hpp>
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+
+namespace rt {
+namespace {
+
+struct Gathered {
+    std::vector<glm::dvec3> positions;
+    std::vector<glm::uvec3> triangles;
+    std::vector<vec3> normals;  // per corner, zero where the mesh has none
+    std::vector<vec3> colours;  // per corner, one where the mesh has none
+    bool any_normals = false, any_colours = false;
+};
+
+void gather(const std::string& file, const aiMesh& m, Gathered& g) {
+    const auto base = static_cast<std::uint32_t>(g.positions.size());
+    for (unsigned v = 0; v < m.mNumVertices; ++v) {
+        const aiVector3D& p = m.mVertices[v];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw Error(file, "vertex " + std::to_string(v), "a coordinate is not a finite number");
+        g.positions.emplace_back(p.x, p.y, p.z);
+    }
+    const bool normals = m.HasNormals(), colours = m.HasVertexColors(0);
+    g.any_normals = g.any_normals || normals;
+    g.any_colours = g.any_colours || colours;
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+        const aiFace& face = m.mFaces[f];
+        if (face.mNumIndices != 3) continue;  // points and lines: the tracer renders surfaces
+        glm::uvec3 tri;
+        for (int k = 0; k < 3; ++k) {
+            const unsigned i = face.mIndices[k];
+            if (i >= m.mNumVertices)
+                throw Error(file, "face " + std::to_string(f), "vertex index out of range");
+            tri[k] = base + i;
+            const vec3 n =
+                normals ? vec3(m.mNormals[i].x, m.mNormals[i].y, m.mNormals[i].z) : vec3(0.0f);
+            g.normals.push_back(
+                std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) ? n : vec3(0.0f));
+            const aiColor4D c = colours ? m.mColors[0][i] : aiColor4D(1.0f, 1.0f, 1.0f, 1.0f);
+            g.colours.push_back(glm::clamp(vec3(c.r, c.g, c.b), vec3(0.0f), vec3(1.0f)));
+        }
+        g.triangles.push_back(tri);
+    }
+}
+
+}  // namespace
+
+MeshFile load_ply_stl(const std::filesystem::path& path, const MeshFileOptions& options) {
+    const std::string file = path.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error(file, "open", "cannot open file (does it exist?)");
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(
+        file, aiProcess_Triangulate | aiProcess_ValidateDataStructure | aiProcess_SortByPType);
+    if (!scene || !scene->mRootNode) {
+        std::string what = importer.GetErrorString();
+        std::replace(what.begin(), what.end(), '\n', ' ');
+        throw Error(file, "parse", what.empty() ? "not a readable PLY or STL file" : what);
+    }
+    Gathered g;
+    for (unsigned i = 0; i < scene->mNumMeshes; ++i) gather(file, *scene->mMeshes[i], g);
+    if (g.triangles.empty()) throw Error(file, "faces", "no triangles: nothing to render");
+
+    MeshFile data;
+    data.mesh.name = path.filename().string();
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::uvec3& t : g.triangles)
+        for (int k = 0; k < 3; ++k) {
+            lo = glm::min(lo, g.positions[t[k]]);
+            hi = glm::max(hi, g.positions[t[k]]);
+        }
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    if (options.origin)
+        data.origin = *options.origin;
+    else if (std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)}) >
+             options.recentre_beyond)
+        data.origin = centre;
+    for (const glm::dvec3& p : g.positions) data.mesh.positions.push_back(vec3(p - data.origin));
+    data.mesh.triangles = std::move(g.triangles);
+    data.mesh.materials.assign(data.mesh.triangles.size(), kNoFileMaterial);
+    if (g.any_colours) data.mesh.corner_colours = std::move(g.colours);
+    if (g.any_normals) {
+        for (std::size_t t = 0; t < data.mesh.triangles.size(); ++t) {
+            const vec3 face = glm::normalize(data.mesh.face_normal(static_cast<std::uint32_t>(t)));
+            for (int k = 0; k < 3; ++k) {
+                const vec3 n = g.normals[3 * t + static_cast<std::size_t>(k)];
+                data.mesh.corner_normals.push_back(glm::dot(n, n) > 0.0f ? glm::normalize(n)
+                                                                         : face);
+            }
+        }
+    }
+    if (const std::size_t dropped = drop_duplicate_triangles(data.mesh))
+        data.warnings.push_back(file + ": warning: " + std::to_string(dropped) +
+                                " faces repeat an earlier face and were dropped");
+    return data;
+}
+
+}  // namespace rt
