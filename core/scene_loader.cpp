@@ -460,15 +460,24 @@ LoadedScene load_gltf_scene(const std::filesystem::path& path, const LoadOptions
     return out;
 }
 
+bool is_bare_mesh(const std::filesystem::path& path) {
+    const std::string ext = lower_extension(path);
+    return ext == ".obj" || ext == ".ply" || ext == ".stl";
+}
+
+bool is_scene_file(const std::filesystem::path& path) {
+    const std::string ext = lower_extension(path);
+    return is_bare_mesh(path) || ext == ".json" || ext == ".gltf" || ext == ".glb";
+}
+
 LoadedScene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
     const std::string ext = lower_extension(path);
     if (ext == ".obj") return load_obj_scene(path, options);
     if (ext == ".json") return load_json_scene(path);
     if (ext == ".gltf" || ext == ".glb") return load_gltf_scene(path, options);
     if (ext == ".ply" || ext == ".stl") return load_obj_scene(path, options);
-    throw Error(
-        path.string(), "open",
-        "unknown scene format \"" + ext + "\" (expected .json, .obj, .gltf, .glb, .ply or .stl)");
+    throw Error(path.string(), "open",
+                "unknown scene format \"" + ext + "\" (expected " + kSceneFormats + ")");
 }
 
 }  // namespace rt

@@ -36,6 +36,12 @@ LoadedScene load_json_scene(const std::filesystem::path& path);
 LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 LoadedScene load_gltf_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 
+// What load_scene reads, by extension (case-insensitive): a scene file of any kind, and
+// of those the bare meshes that --up turns.
+bool is_scene_file(const std::filesystem::path& path);
+bool is_bare_mesh(const std::filesystem::path& path);
+inline constexpr const char* kSceneFormats = ".json, .obj, .gltf, .glb, .ply or .stl";
+
 // The accepted --up names, for the programs' checks.
 inline constexpr const char* kUpAxes[] = {"y", "z", "x", "-y", "-z", "-x"};
 

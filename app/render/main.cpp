@@ -22,7 +22,8 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     CLI::App app{"rtrender: renders a scene with rtview's Whitted ray tracer and/or OpenGL"};
     bool no_shadows = false, no_reflections = false, no_refractions = false;
     std::string item_buffer = "off";
-    app.add_option("scene", o.scene, "Scene file (.json or .obj)")->required();
+    app.add_option("scene", o.scene, "Scene or model file (.json, .obj, .gltf, .glb, .ply, .stl)")
+        ->required();
     app.add_option("-o,--output", o.output, "Output image (.png or .exr); default out/SCENE.png");
     app.add_option("--mode", o.mode,
                    "trace, raster, both (raster, traced and difference), itembuffer, or explain "

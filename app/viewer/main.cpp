@@ -22,8 +22,9 @@ int main(int argc, char** argv) {
     std::string size, save_dir = ".";
     options.view = rt::gl::View::kSplit;
     CLI::App app{"rtview: one scene, rasterised by OpenGL and ray traced, side by side"};
-    app.add_option("scene", options.scene,
-                   "Scene file (.json or .obj); default: the Whitted scene");
+    app.add_option(
+        "scene", options.scene,
+        "Scene or model file (.json, .obj, .gltf, .glb, .ply, .stl); default: the Whitted scene");
     app.add_option("--size", size, "Window size WxH (default 1280x720)");
     app.add_option("--view", options.view, "First view")
         ->transform(rt::app::cli_names(rt::viewer::kViews));

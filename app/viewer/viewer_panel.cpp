@@ -35,7 +35,7 @@ int complete_path(ImGuiInputTextCallbackData* data) {
         const std::string ext = e.path().extension().string();
         const bool dir_entry = e.is_directory(ec);
         if (name.rfind(prefix, 0) != 0 || (name[0] == '.' && prefix.empty())) continue;
-        if (!dir_entry && ext != ".json" && ext != ".obj") continue;
+        if (!dir_entry && !rt::is_scene_file(e.path())) continue;
         candidates.push_back(dir_entry ? name + "/" : name);
     }
     std::sort(candidates.begin(), candidates.end());
@@ -90,7 +90,7 @@ void Viewer::draw_panel() {
         ImGui::EndCombo();
     }
     draw_open_field();
-    if (shown.extension() == ".obj") {
+    if (rt::is_bare_mesh(shown)) {
         // A bare mesh from a Z-up tool (scans, CAD) is seen from the top: turn it.
         if (ImGui::BeginCombo("up axis", options_.up.c_str())) {
             for (const char* axis : rt::kUpAxes)
@@ -178,7 +178,7 @@ void Viewer::draw_panel() {
 void Viewer::draw_open_field() {
     ImGui::SetNextItemWidth(230.0f);
     const bool enter = ImGui::InputTextWithHint(
-        "##open", "path of a .json or .obj (Tab completes)", open_path_.data(), open_path_.size(),
+        "##open", "path of a scene or model (Tab completes)", open_path_.data(), open_path_.size(),
         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CallbackCompletion,
         complete_path, &open_candidates_);
     ImGui::SameLine();
@@ -193,7 +193,7 @@ void Viewer::draw_open_field() {
         ImGui::TextDisabled("  %s", open_candidates_[i].c_str());
     if (open_candidates_.size() > 8)
         ImGui::TextDisabled("  ... %zu more", open_candidates_.size() - 8);
-    ImGui::TextDisabled("or drop a .json or .obj on the window; F5 reads it again");
+    ImGui::TextDisabled("or drop a scene or model file on the window; F5 reads it again");
 }
 
 void Viewer::draw_diff_controls() {
