@@ -94,6 +94,11 @@ class GltfReader {
     std::uint32_t texture(int index, const std::string& where);
     // An accessor's elements of `width` components each, checked against its buffer.
     std::vector<double> elements(int accessor, int width, const std::string& where) const;
+    // A primitive's per-vertex attribute `name` (empty if absent), one element a vertex.
+    // Width 0: 3 or 4 components, as the accessor has (told through `width_out`).
+    std::vector<double> attribute(const tinygltf::Primitive& p, const std::string& name, int width,
+                                  std::size_t vertices, const std::string& where,
+                                  int* width_out = nullptr) const;
     void finish();
 
     std::filesystem::path path_;
@@ -106,6 +111,8 @@ class GltfReader {
     std::vector<bool> has_normals_;      // per triangle
     std::vector<glm::vec2> uvs_;         // per corner, (0, 0) where a primitive has none
     bool any_uvs_ = false;
+    std::vector<vec3> colours_;  // per corner, white where a primitive has none
+    bool any_colours_ = false;
     std::map<int, std::uint32_t> texture_of_;  // glTF texture -> MeshFile::textures
     std::vector<glm::dvec3> camera_eyes_;
     struct PendingLight {
@@ -225,6 +232,25 @@ std::vector<double> GltfReader::elements(int index, int width, const std::string
     return out;
 }
 
+std::vector<double> GltfReader::attribute(const tinygltf::Primitive& p, const std::string& name,
+                                          int width, std::size_t vertices, const std::string& where,
+                                          int* width_out) const {
+    const auto it = p.attributes.find(name);
+    if (it == p.attributes.end()) return {};
+    if (width == 0 && it->second >= 0 && it->second < static_cast<int>(model_.accessors.size()))
+        width = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(
+            model_.accessors[static_cast<std::size_t>(it->second)].type));
+    if (width_out) {
+        if (width != 3 && width != 4)
+            fail(at("accessors", it->second), name + " must be VEC3 or VEC4");
+        *width_out = width;
+    }
+    std::vector<double> values = elements(it->second, width, where + "/attributes/" + name);
+    if (values.size() != vertices * static_cast<std::size_t>(width))
+        fail(at("accessors", it->second), "not one " + name + " a vertex");
+    return values;
+}
+
 void GltfReader::add_mesh(int mesh, const glm::dmat4& world, const std::string& where) {
     if (mesh >= static_cast<int>(model_.meshes.size()))
         fail(where + "/mesh", "no such mesh " + std::to_string(mesh));
@@ -277,19 +303,12 @@ void GltfReader::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& w
     } else {
         for (std::size_t i = 0; i < vertices; ++i) index[i] = static_cast<std::uint32_t>(i);
     }
-    std::vector<double> normals;
-    if (const auto n = p.attributes.find("NORMAL"); n != p.attributes.end()) {
-        normals = elements(n->second, 3, where + "/attributes/NORMAL");
-        if (normals.size() != xyz.size())
-            fail(at("accessors", n->second), "not one normal a vertex");
-    }
-    std::vector<double> uv;
-    if (const auto t = p.attributes.find("TEXCOORD_0"); t != p.attributes.end()) {
-        uv = elements(t->second, 2, where + "/attributes/TEXCOORD_0");
-        if (uv.size() / 2 != vertices)
-            fail(at("accessors", t->second), "not one coordinate a vertex");
-        any_uvs_ = true;
-    }
+    const std::vector<double> normals = attribute(p, "NORMAL", 3, vertices, where);
+    const std::vector<double> uv = attribute(p, "TEXCOORD_0", 2, vertices, where);
+    any_uvs_ = any_uvs_ || !uv.empty();
+    int colour_width = 0;  // COLOR_0 is RGB or RGBA (alpha unused)
+    const std::vector<double> colour = attribute(p, "COLOR_0", 0, vertices, where, &colour_width);
+    any_colours_ = any_colours_ || !colour.empty();
     const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
     const auto base = static_cast<std::uint32_t>(positions_.size());
     for (std::size_t v = 0; v < vertices; ++v)
@@ -306,6 +325,11 @@ void GltfReader::add_primitive(const tinygltf::Primitive& p, const glm::dmat4& w
         for (int k = 0; k < 3; ++k) {
             const std::size_t v = corners[c + static_cast<std::size_t>(k)];
             uvs_.push_back(uv.empty() ? glm::vec2(0.0f) : glm::vec2(uv[2 * v], uv[2 * v + 1]));
+            const std::size_t c0 = v * static_cast<std::size_t>(colour_width);
+            colours_.push_back(colour.empty()
+                                   ? vec3(1.0f)
+                                   : glm::clamp(vec3(colour[c0], colour[c0 + 1], colour[c0 + 2]),
+                                                vec3(0.0f), vec3(1.0f)));
             normals_.push_back(normals.empty()
                                    ? glm::dvec3(0.0)
                                    : normal_matrix * glm::dvec3(normals[3 * v], normals[3 * v + 1],
@@ -457,6 +481,7 @@ void GltfReader::finish() {
         }
     }
     if (any_uvs_) g.mesh.corner_uvs = std::move(uvs_);
+    if (any_colours_) g.mesh.corner_colours = std::move(colours_);
     for (std::size_t i = 0; i < scene_.cameras.size(); ++i)
         scene_.cameras[i].eye = vec3(camera_eyes_[i] - g.origin);
     double brightest = 0.0;

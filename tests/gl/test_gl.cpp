@@ -116,7 +116,7 @@ TEST_P(Gl, ModelFilesAgreeInBothPipelines) {
          {dir / "khronos" / "Cube" / "Cube.gltf", dir / "khronos" / "BoxTextured.glb",
           dir / "khronos" / "Cameras" / "Cameras.gltf", dir / "lights.gltf",
           dir / ".." / "mesh" / "octahedron_binary.ply",
-          dir / ".." / "mesh" / "octahedron_ascii.stl"}) {
+          dir / ".." / "mesh" / "octahedron_ascii.stl", dir / "colours.gltf"}) {
         LoadedScene loaded = load_scene(file);
         loaded.scene.camera = loaded.scene.camera.resized(200, 150);
         const Scene scene(std::move(loaded.scene));

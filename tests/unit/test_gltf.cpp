@@ -144,6 +144,21 @@ TEST(Gltf, PunctualLightsBecomeTheScenesLights) {
     EXPECT_NE(s.warnings[0].find("EXT_unknown_for_the_test"), std::string::npos);
 }
 
+// COLOR_0 (normalised RGBA bytes here) becomes each corner's colour; a primitive without
+// it is white.
+TEST(Gltf, VertexColoursAreReadPerCorner) {
+    const GltfScene g = load_gltf(gltf("colours.gltf"));
+    const TriangleMesh& m = g.geometry.mesh;
+    ASSERT_EQ(m.corner_colours.size(), 3 * m.triangles.size());
+    // The square's first triangle is vertices 0, 1, 2: red, green, blue.
+    EXPECT_EQ(m.corner_colours[0], vec3(1, 0, 0));
+    EXPECT_EQ(m.corner_colours[1], vec3(0, 1, 0));
+    EXPECT_EQ(m.corner_colours[2], vec3(0, 0, 1));
+    for (std::size_t c = 6; c < m.corner_colours.size(); ++c)
+        EXPECT_EQ(m.corner_colours[c], vec3(1.0f)) << c;  // the tetrahedron has none
+    EXPECT_TRUE(load_gltf(gltf("hierarchy.gltf")).geometry.mesh.corner_colours.empty());
+}
+
 // Broken files: one located error each (tests/cli/bad_input.sh checks the programs say so).
 TEST(Gltf, BrokenFilesAreLocatedErrors) {
     const auto bad = test::source_dir() / "tests" / "data" / "bad";

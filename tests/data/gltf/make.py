@@ -19,9 +19,11 @@ def pack(fmt, values):
     return b"".join(struct.pack(fmt, *v) if isinstance(v, tuple) else struct.pack(fmt, v) for v in values)
 
 
-def model(count_override=None, required=None, cycle=False, buffer_uri=None):
+def model(count_override=None, required=None, cycle=False, buffer_uri=None, colours=False):
     chunks = [pack("<3f", square_pos), pack("<3f", square_nrm), pack("<H", square_idx) + b"\0\0",
               pack("<3f", tetra_pos), pack("<H", tetra_idx)]
+    if colours:  # COLOR_0 of the square: normalised bytes, RGBA
+        chunks.append(pack("<4B", [(255, 0, 0, 255), (0, 255, 0, 255), (0, 0, 255, 255), (255, 255, 255, 255)]))
     data, views, offset = b"", [], 0
     for c in chunks:
         views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(c)})
@@ -39,6 +41,8 @@ def model(count_override=None, required=None, cycle=False, buffer_uri=None):
     ]
     if count_override:
         acc[0]["count"] = count_override
+    if colours:
+        acc.append({"bufferView": 5, "componentType": 5121, "normalized": True, "count": 4, "type": "VEC4"})
     s = math.sin(math.radians(15)); c = math.cos(math.radians(15))   # 30 degrees about y
     s2 = math.sin(math.radians(22.5)); c2 = math.cos(math.radians(22.5))  # 45 degrees about z
     doc = {
@@ -66,6 +70,8 @@ def model(count_override=None, required=None, cycle=False, buffer_uri=None):
         "buffers": [{"byteLength": len(data),
                      "uri": buffer_uri or "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
     }
+    if colours:
+        doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 5
     if required:
         doc["extensionsUsed"] = [required]
         doc["extensionsRequired"] = [required]
@@ -127,3 +133,6 @@ textured["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(b"\x89
 textured["textures"] = [{"source": 0}]
 textured["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
 write_json(os.path.join(bad, "gltf_bad_image.gltf"), textured)
+
+# Vertex colours (COLOR_0) on the square.
+write_json(os.path.join(here, "colours.gltf"), model(colours=True)[0])
