@@ -80,11 +80,7 @@ MeshFile load_ply_stl(const std::filesystem::path& path, const MeshFileOptions& 
             hi = glm::max(hi, g.positions[t[k]]);
         }
     const glm::dvec3 centre = 0.5 * (lo + hi);
-    if (options.origin)
-        data.origin = *options.origin;
-    else if (std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)}) >
-             options.recentre_beyond)
-        data.origin = centre;
+    data.origin = mesh_origin(options, centre);
     for (const glm::dvec3& p : g.positions) data.mesh.positions.push_back(vec3(p - data.origin));
     data.mesh.triangles = std::move(g.triangles);
     data.mesh.materials.assign(data.mesh.triangles.size(), kNoFileMaterial);

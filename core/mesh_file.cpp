@@ -1,5 +1,8 @@
 #include "core/mesh_file.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/assimp_loader.h"
 #include "core/error.h"
 #include "core/file_kind.h"
@@ -7,6 +10,12 @@
 #include "core/obj_loader.h"
 
 namespace rt {
+
+glm::dvec3 mesh_origin(const MeshFileOptions& options, const glm::dvec3& centre) {
+    if (options.origin) return *options.origin;
+    const double far = std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)});
+    return far > options.recentre_beyond ? centre : glm::dvec3(0.0);
+}
 
 MeshFile load_mesh_file(const std::filesystem::path& path, const MeshFileOptions& options) {
     const std::string ext = lower_extension(path);

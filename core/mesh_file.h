@@ -37,6 +37,10 @@ struct MeshFile {
 
 inline constexpr std::uint32_t kNoFileMaterial = 0xffffffffu;
 
+// Where a mesh with the box centre `centre` (file coordinates) puts its zero: the origin
+// asked for, else the centre if it lies beyond recentre_beyond, else the file's zero.
+glm::dvec3 mesh_origin(const MeshFileOptions& options, const glm::dvec3& centre);
+
 // By the file's extension: .obj (core/obj_loader.h), .gltf or .glb (core/gltf_loader.h),
 // .ply or .stl (core/assimp_loader.h).
 // Throws rt::Error naming the file on anything it cannot use.

@@ -299,11 +299,7 @@ MeshFile load_obj(const std::filesystem::path& path, const MeshFileOptions& opti
         data.materials.back().texture = it->second;
     }
     const glm::dvec3 centre = used_centre(attrib, shapes);
-    if (options.origin)
-        data.origin = *options.origin;
-    else if (std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)}) >
-             options.recentre_beyond)
-        data.origin = centre;
+    data.origin = mesh_origin(options, centre);
     copy_positions(file, attrib, data.origin, data.mesh);
     const bool has_normals = copy_triangles(file, attrib, shapes, data.mesh);
     if (const std::size_t dropped = drop_duplicate_triangles(data.mesh))

@@ -71,6 +71,40 @@ TEST_P(Gl, ContextIsCoreProfile33OrLater) {
 const char* const kScenes[] = {"tutorial.json", "whitted.json", "cornell.json",
                                "many_spheres.json"};
 
+// Whether two linear colours differ on screen: by more than 2/255 in a channel, sRGB encoded.
+bool differ_on_screen(const vec3& a, const vec3& b) {
+    float d = 0.0f;
+    for (int k = 0; k < 3; ++k) d = std::max(d, std::fabs(srgb_encode(a[k]) - srgb_encode(b[k])));
+    return d > 2.0f / 255.0f;
+}
+
+// The raster image against local-only tracing (no shadows, reflections or refractions),
+// counted over the pixels away from any edge in the item buffer (`objects_only`: and not
+// the background).
+struct LocalAgreement {
+    std::size_t inside = 0, off = 0;
+    ImageDiff all;
+};
+LocalAgreement raster_against_local_trace(const Scene& scene, bool objects_only) {
+    gl::RasterRenderer raster(scene);
+    const Image r = raster.render(scene.camera);
+    const ItemBuffer ib = raster.render_item_buffer(scene.camera);
+    RenderOptions options;
+    options.trace.shadows = options.trace.reflections = options.trace.refractions = false;
+    const Image t = render(scene, options);
+    LocalAgreement out;
+    for (int y = 0; y < r.height; ++y) {
+        for (int x = 0; x < r.width; ++x) {
+            if (!ib.interior(x, y)) continue;
+            if (objects_only && ib.object[ib.index(x, y)] == ItemBuffer::kEmpty) continue;
+            ++out.inside;
+            out.off += differ_on_screen(r.at(x, y), t.at(x, y));
+        }
+    }
+    out.all = compare_images(r, t);
+    return out;
+}
+
 // With shadows, reflection and refraction off, the tracer computes exactly what the
 // raster pipeline computes. Inside objects (away from any edge in the item buffer) the
 // two must agree to a rounding; only silhouettes, where a tessellated sphere and the
@@ -78,31 +112,13 @@ const char* const kScenes[] = {"tutorial.json", "whitted.json", "cornell.json",
 TEST_P(Gl, RasterEqualsLocalTracingAwayFromSilhouettes) {
     for (const char* name : kScenes) {
         const Scene scene(load(name, 200, 150));
-        gl::RasterRenderer raster(scene);
-        const Image r = raster.render(scene.camera);
-        const ItemBuffer ib = raster.render_item_buffer(scene.camera);
-        RenderOptions options;
-        options.trace.shadows = options.trace.reflections = options.trace.refractions = false;
-        const Image t = render(scene, options);
-
-        std::size_t interior = 0, interior_off = 0;
-        for (int y = 0; y < r.height; ++y) {
-            for (int x = 0; x < r.width; ++x) {
-                if (!ib.interior(x, y)) continue;
-                ++interior;
-                const vec3 a = r.at(x, y), b = t.at(x, y);
-                float d = 0.0f;
-                for (int k = 0; k < 3; ++k)
-                    d = std::max(d, std::fabs(srgb_encode(a[k]) - srgb_encode(b[k])));
-                interior_off += d > 2.0f / 255.0f;
-            }
-        }
-        const ImageDiff all = compare_images(r, t);
-        EXPECT_GT(interior, r.pixels.size() / 2) << name;
+        const LocalAgreement a = raster_against_local_trace(scene, false);
+        const std::size_t pixels = static_cast<std::size_t>(scene.camera.cols) * scene.camera.rows;
+        EXPECT_GT(a.inside, pixels / 2) << name;
         // A few checker cells flip where the floor meets the horizon, at float precision.
-        EXPECT_LE(static_cast<double>(interior_off), 1e-3 * static_cast<double>(interior)) << name;
-        EXPECT_LT(all.share_over, 0.03) << name << ": silhouettes only";
-        EXPECT_GT(all.psnr_db, 25.0) << name;
+        EXPECT_LE(static_cast<double>(a.off), 1e-3 * static_cast<double>(a.inside)) << name;
+        EXPECT_LT(a.all.share_over, 0.03) << name << ": silhouettes only";
+        EXPECT_GT(a.all.psnr_db, 25.0) << name;
     }
 }
 
@@ -120,27 +136,10 @@ TEST_P(Gl, ModelFilesAgreeInBothPipelines) {
         LoadedScene loaded = load_scene(file);
         loaded.scene.camera = loaded.scene.camera.resized(200, 150);
         const Scene scene(std::move(loaded.scene));
-        gl::RasterRenderer raster(scene);
-        const Image r = raster.render(scene.camera);
-        const ItemBuffer ib = raster.render_item_buffer(scene.camera);
-        RenderOptions options;
-        options.trace.shadows = options.trace.reflections = options.trace.refractions = false;
-        const Image t = render(scene, options);
-        std::size_t inside = 0, off = 0;
-        for (int y = 0; y < r.height; ++y) {
-            for (int x = 0; x < r.width; ++x) {
-                if (!ib.interior(x, y) || ib.object[ib.index(x, y)] == ItemBuffer::kEmpty) continue;
-                ++inside;
-                float d = 0.0f;
-                for (int k = 0; k < 3; ++k)
-                    d = std::max(
-                        d, std::fabs(srgb_encode(r.at(x, y)[k]) - srgb_encode(t.at(x, y)[k])));
-                off += d > 2.0f / 255.0f;
-            }
-        }
-        EXPECT_GT(inside, r.pixels.size() / 50) << file;
-        EXPECT_LE(static_cast<double>(off), 1e-3 * static_cast<double>(inside)) << file;
-        EXPECT_LT(compare_images(r, t).share_over, 0.03) << file << ": silhouettes only";
+        const LocalAgreement a = raster_against_local_trace(scene, true);
+        EXPECT_GT(a.inside, std::size_t{200 * 150 / 50}) << file;  // objects in the picture
+        EXPECT_LE(static_cast<double>(a.off), 1e-3 * static_cast<double>(a.inside)) << file;
+        EXPECT_LT(a.all.share_over, 0.03) << file << ": silhouettes only";
     }
 }
 
@@ -165,12 +164,6 @@ TEST_P(Gl, TexturesShowAlikeInBothPipelines) {
         const auto [r, t, ib] = pictures(loaded.scene);
         const auto [r_plain, t_plain, ib_plain] = pictures(plain);
         std::size_t textured = 0, off = 0, raster_changed = 0, traced_changed = 0;
-        const auto differ = [](const vec3& a, const vec3& b) {
-            float d = 0.0f;
-            for (int k = 0; k < 3; ++k)
-                d = std::max(d, std::fabs(srgb_encode(a[k]) - srgb_encode(b[k])));
-            return d > 2.0f / 255.0f;
-        };
         for (int y = 0; y < r.height; ++y) {
             for (int x = 0; x < r.width; ++x) {
                 const std::uint32_t id = ib.object[ib.index(x, y)];
@@ -178,9 +171,9 @@ TEST_P(Gl, TexturesShowAlikeInBothPipelines) {
                 const Object& o = loaded.scene.objects[id - 1];
                 if (!std::holds_alternative<MeshRef>(o.shape)) continue;  // the floor, the mirror
                 ++textured;
-                off += differ(r.at(x, y), t.at(x, y));
-                raster_changed += differ(r.at(x, y), r_plain.at(x, y));
-                traced_changed += differ(t.at(x, y), t_plain.at(x, y));
+                off += differ_on_screen(r.at(x, y), t.at(x, y));
+                raster_changed += differ_on_screen(r.at(x, y), r_plain.at(x, y));
+                traced_changed += differ_on_screen(t.at(x, y), t_plain.at(x, y));
             }
         }
         ASSERT_GT(textured, r.pixels.size() / 50) << file;
