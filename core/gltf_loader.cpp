@@ -15,6 +15,7 @@
 
 #include "core/error.h"
 #include "core/file_kind.h"
+#include "core/gltf_material.h"
 
 namespace rt {
 namespace {
@@ -413,42 +414,16 @@ std::uint32_t GltfReader::texture(int index, const std::string& where) {
 
 Material GltfReader::material(int index) {
     const tinygltf::Material& g = model_.materials[static_cast<std::size_t>(index)];
-    const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
-    vec3 base(1.0f);
-    if (pbr.baseColorFactor.size() >= 3)
-        base = vec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]);
-    const float metallic = std::clamp(static_cast<float>(pbr.metallicFactor), 0.0f, 1.0f);
-    const float roughness = std::clamp(static_cast<float>(pbr.roughnessFactor), 0.0f, 1.0f);
-    Material m;
-    m.name = g.name.empty() ? "material " + std::to_string(index) : g.name;
-    // A smooth metal is a mirror of its colour; what a surface does not mirror it
-    // scatters: a rough metal looks like a coloured matte one, a dielectric is its base
-    // colour with a 4 % highlight. The highlight narrows as the roughness falls.
-    m.reflectivity = metallic * (1.0f - roughness);
-    m.kd = base * (1.0f - m.reflectivity);
-    m.ka = m.kd;
-    m.ks = glm::mix(vec3(0.04f), base, metallic);
-    const float alpha = std::max(roughness * roughness, 0.03f);  // GGX's alpha
-    m.shininess = std::clamp(2.0f / (alpha * alpha) - 2.0f, 1.0f, 2000.0f);
-    if (pbr.baseColorTexture.index >= 0) {
-        if (pbr.baseColorTexture.texCoord != 0)
+    Material m = phong_of(g);
+    if (m.name.empty()) m.name = "material " + std::to_string(index);
+    const tinygltf::TextureInfo& base = g.pbrMetallicRoughness.baseColorTexture;
+    if (base.index >= 0) {
+        if (base.texCoord != 0)
             warn(at("materials", index),
                  "texture coordinates other than TEXCOORD_0: TEXCOORD_0 used");
-        m.texture = texture(pbr.baseColorTexture.index,
-                            at("materials", index) + "/pbrMetallicRoughness/baseColorTexture");
+        m.texture =
+            texture(base.index, at("materials", index) + "/pbrMetallicRoughness/baseColorTexture");
     }
-    if (g.emissiveFactor.size() == 3)
-        m.emission = vec3(g.emissiveFactor[0], g.emissiveFactor[1], g.emissiveFactor[2]);
-    if (const auto t = g.extensions.find("KHR_materials_transmission"); t != g.extensions.end())
-        if (t->second.Has("transmissionFactor"))
-            m.transparency = std::clamp(
-                static_cast<float>(t->second.Get("transmissionFactor").GetNumberAsDouble()), 0.0f,
-                1.0f);
-    if (const auto i = g.extensions.find("KHR_materials_ior"); i != g.extensions.end())
-        if (i->second.Has("ior")) {
-            const double ior = i->second.Get("ior").GetNumberAsDouble();
-            if (ior > 0.0) m.ior = static_cast<float>(ior);
-        }
     return m;
 }
 
