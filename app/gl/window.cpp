@@ -113,8 +113,11 @@ void Window::deliver_queued() {
         const auto same = [&](const InputEvent& c) { return c.kind == e.kind && c.code == e.code; };
         if (std::any_of(changed_.begin(), changed_.end(), same)) break;  // ImGui's next frame
         changed_.push_back(e);
-        if (e.kind == InputEvent::kButton)
+        if (e.kind == InputEvent::kButton) {
+            if (e.code >= 0 && e.code < static_cast<int>(buttons_down_.size()))
+                buttons_down_[static_cast<std::size_t>(e.code)] = e.action == GLFW_PRESS;
             ImGui_ImplGlfw_MouseButtonCallback(window_, e.code, e.action, e.mods);
+        }
         else
             ImGui_ImplGlfw_KeyCallback(window_, e.code, e.scancode, e.action, e.mods);
     }
@@ -132,6 +135,10 @@ void Window::forward_scroll(GLFWwindow* window, double dx, double dy) {
 void Window::begin_imgui_frame() {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+#if IMGUI_VERSION_NUM < 18700  // later versions take the events themselves, in order
+    ImGuiIO& io = ImGui::GetIO();
+    for (std::size_t i = 0; i < buttons_down_.size(); ++i) io.MouseDown[i] = buttons_down_[i];
+#endif
     ImGui::NewFrame();
     // ImGui has taken this frame's key and button states: the next changes may go in.
     changed_.clear();

@@ -2,6 +2,7 @@
 // A GLFW window with an OpenGL 3.3 core context, loaded through the same glad loader as
 // the headless contexts (fed by glfwGetProcAddress), plus Dear ImGui on top of it.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ class Window {
     // release within one frame (a quick tap or click while a frame is slow), or two clicks
     // within one, would be lost: each key and button changes state at most once between
     // two of ImGui's frames, and the events beyond that wait, in order, for the next.
+    // ImGui 1.86's GLFW back-end reads a button's state from GLFW at each frame, which is
+    // the state after the latest event GLFW has seen (a later click's press, say, with
+    // this click's release still queued here): the buttons' state ImGui is given is the
+    // one delivered from this queue.
     void forward_key(int key, int scancode, int action, int mods);
     void forward_mouse_button(int button, int action, int mods);
     void forward_char(unsigned int c);  // queued with the keys, so typing keeps its order
@@ -51,6 +56,7 @@ class Window {
     GLFWwindow* window_ = nullptr;
     std::vector<InputEvent> queued_;   // waiting for ImGui's next frame
     std::vector<InputEvent> changed_;  // keys and buttons changed since ImGui's last frame
+    std::array<bool, 5> buttons_down_{};  // as delivered (ImGuiMouseButton_COUNT buttons)
     std::string description_;
     bool imgui_ = false;
 };
