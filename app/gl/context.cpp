@@ -24,6 +24,12 @@ std::string load_gl(ProcLoader loader) {
 
 }  // namespace detail
 
+std::string compute_unavailable_reason() {
+    if (GLAD_GL_VERSION_4_3) return "";
+    return std::string("compute shaders need OpenGL 4.3; this context has ") +
+           reinterpret_cast<const char*>(glGetString(GL_VERSION));
+}
+
 std::unique_ptr<Context> create_headless_context(Backend backend, const std::string& program) {
     std::string failures;
     if (backend == Backend::kEgl || backend == Backend::kAuto) {

@@ -29,7 +29,14 @@ class Context {
 // context can be made, saying why each attempt failed.
 std::unique_ptr<Context> create_headless_context(Backend backend, const std::string& program);
 
+// Compute shaders and shader storage buffers (OpenGL 4.3) in the current context: what
+// the GPU tracer needs. Empty when there; else why not, in words.
+std::string compute_unavailable_reason();
+
 namespace detail {
+// The core versions a context asks for, best first: a vendor driver gives exactly the
+// version asked (NVIDIA: "OpenGL 3.3.0" for 3.3), Mesa its highest whatever is asked.
+inline constexpr int kCoreVersions[][2] = {{4, 6}, {4, 5}, {4, 3}, {3, 3}};
 using ProcLoader = void* (*)(const char*);
 std::unique_ptr<Context> create_egl_context();     // throws std::runtime_error
 std::unique_ptr<Context> create_osmesa_context();  // throws std::runtime_error

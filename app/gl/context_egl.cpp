@@ -78,18 +78,21 @@ class EglContext : public Context {
         }
         display_refs().add(display_);
         if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)");
-        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
-                                     3,
-                                     EGL_CONTEXT_MINOR_VERSION,
-                                     3,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                     EGL_CONTEXT_OPENGL_DEBUG,
-                                     debug_output_requested() ? EGL_TRUE : EGL_FALSE,
-                                     EGL_NONE};
         // No config: EGL_KHR_no_config_context, which Mesa has; no surface either.
-        context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
-        if (context_ == EGL_NO_CONTEXT) fail("eglCreateContext (OpenGL 3.3 core)");
+        for (const auto& version : kCoreVersions) {
+            const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                         version[0],
+                                         EGL_CONTEXT_MINOR_VERSION,
+                                         version[1],
+                                         EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                         EGL_CONTEXT_OPENGL_DEBUG,
+                                         debug_output_requested() ? EGL_TRUE : EGL_FALSE,
+                                         EGL_NONE};
+            context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+            if (context_ != EGL_NO_CONTEXT) break;
+        }
+        if (context_ == EGL_NO_CONTEXT) fail("eglCreateContext (OpenGL 3.3 core or later)");
         if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
             fail("eglMakeCurrent");
         try {

@@ -13,20 +13,23 @@ namespace {
 class OsmesaContext : public Context {
   public:
     OsmesaContext() {
-        const int attributes[] = {OSMESA_FORMAT,
-                                  OSMESA_RGBA,
-                                  OSMESA_DEPTH_BITS,
-                                  24,
-                                  OSMESA_PROFILE,
-                                  OSMESA_CORE_PROFILE,
-                                  OSMESA_CONTEXT_MAJOR_VERSION,
-                                  3,
-                                  OSMESA_CONTEXT_MINOR_VERSION,
-                                  3,
-                                  0};
-        context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+        for (const auto& version : kCoreVersions) {
+            const int attributes[] = {OSMESA_FORMAT,
+                                      OSMESA_RGBA,
+                                      OSMESA_DEPTH_BITS,
+                                      24,
+                                      OSMESA_PROFILE,
+                                      OSMESA_CORE_PROFILE,
+                                      OSMESA_CONTEXT_MAJOR_VERSION,
+                                      version[0],
+                                      OSMESA_CONTEXT_MINOR_VERSION,
+                                      version[1],
+                                      0};
+            context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+            if (context_) break;
+        }
         if (!context_)
-            throw std::runtime_error("OSMesaCreateContextAttribs (OpenGL 3.3 core) failed");
+            throw std::runtime_error("OSMesaCreateContextAttribs (OpenGL 3.3 core or later) failed");
         // OSMesa needs a buffer to be current; all rendering goes to FBOs, so 1x1 will do.
         if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
             OSMesaDestroyContext(context_);

@@ -93,6 +93,19 @@ Program::Program(const std::filesystem::path& vertex_file,
     }
 }
 
+Program::Program(const std::filesystem::path& compute_file, const std::vector<std::string>& defines) {
+    const ShaderHandle cs = compile(GL_COMPUTE_SHADER, compute_file, defines);
+    id_ = ProgramHandle(glCreateProgram());
+    glAttachShader(id_.get(), cs.get());
+    glLinkProgram(id_.get());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(id_.get(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        const std::string log = info_log(id_.get(), true);
+        throw Error(compute_file.string(), "link", log.substr(0, log.find('\n')));
+    }
+}
+
 Program& ProgramVariants::get(const std::vector<std::string>& defines) {
     auto it = programs_.find(defines);
     if (it == programs_.end())
@@ -114,6 +127,9 @@ void Program::set(const char* name, unsigned value) { glUniform1ui(location(name
 void Program::set(const char* name, float value) { glUniform1f(location(name), value); }
 void Program::set(const char* name, const glm::vec3& value) {
     glUniform3fv(location(name), 1, glm::value_ptr(value));
+}
+void Program::set(const char* name, const glm::ivec2& value) {
+    glUniform2iv(location(name), 1, glm::value_ptr(value));
 }
 void Program::set(const char* name, const glm::mat3& value) {
     glUniformMatrix3fv(location(name), 1, GL_FALSE, glm::value_ptr(value));

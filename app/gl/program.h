@@ -1,5 +1,5 @@
 #pragma once
-// A GLSL program built from two files in shaders/. Compile and link errors become
+// A GLSL program built from two files in shaders/ (or one compute shader). Compile and link errors become
 // rt::Error "shaders/phong.frag: line 12: syntax error, unexpected ...".
 //
 // A program may be compiled with preprocessor definitions ("SHADOW_MAPS 1"), so that one
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -30,12 +31,16 @@ class Program {
   public:
     Program(const std::filesystem::path& vertex_file, const std::filesystem::path& fragment_file,
             const std::vector<std::string>& defines = {});
+    // A compute program (OpenGL 4.3) from one file.
+    explicit Program(const std::filesystem::path& compute_file,
+                     const std::vector<std::string>& defines = {});
 
     void use() const { glUseProgram(id_.get()); }
     void set(const char* name, int value);
     void set(const char* name, unsigned value);
     void set(const char* name, float value);
     void set(const char* name, const glm::vec3& value);
+    void set(const char* name, const glm::ivec2& value);
     void set(const char* name, const glm::mat3& value);
     void set(const char* name, const glm::mat4& value);
 

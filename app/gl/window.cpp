@@ -34,12 +34,15 @@ Window::Window(int width, int height, const std::string& title) {
     if (!glfwInit())
         throw Error("rtview", "display",
                     "cannot open the display: " + glfw_error() + "; use rtrender");
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debug_output_requested() ? GLFW_TRUE : GLFW_FALSE);
-    window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    for (const auto& version : detail::kCoreVersions) {  // the highest the driver gives
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, version[0]);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, version[1]);
+        window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+        if (window_) break;
+    }
     if (!window_) {
         const std::string why = glfw_error();
         glfwTerminate();

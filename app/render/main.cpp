@@ -1,6 +1,6 @@
 // rtrender: renders a scene headless, ray traced and/or through OpenGL.
-//   rtrender SCENE [-o OUT.png|OUT.exr] [--mode trace|raster|both|itembuffer|explain] [--gl
-//   egl|osmesa]
+//   rtrender SCENE [-o OUT.png|OUT.exr] [--mode trace|raster|both|itembuffer|explain|gputrace]
+//            [--gl egl|osmesa] [--with-gpu]
 //            [--item-buffer on|off] [--accel bvh|bvh2|grid|brute] [--size WxH] [--threads N]
 //            [--max-depth N] [--spp N] [--msaa N] [--raster-shadows none|map]
 //            [--raster-reflections none|envmap] [--no-shadows]
@@ -26,9 +26,13 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
         ->required();
     app.add_option("-o,--output", o.output, "Output image (.png or .exr); default out/SCENE.png");
     app.add_option("--mode", o.mode,
-                   "trace, raster, both (raster, traced and difference), itembuffer, or explain "
-                   "(why they differ: OUT.explain.png)")
+                   "trace, raster, both (raster, traced and difference), itembuffer, explain "
+                   "(why they differ: OUT.explain.png), or gputrace (the tracer as an OpenGL "
+                   "4.3 compute shader)")
         ->transform(rt::app::cli_names(kModeNames));
+    app.add_flag("--with-gpu", o.with_gpu,
+                 "With --mode both: also the GPU-traced image (OUT.gputrace.png) and its "
+                 "difference to the CPU-traced one");
     app.add_option("--gl", o.gl, "OpenGL context: egl, osmesa, or auto (EGL, then OSMesa)")
         ->transform(rt::app::cli_names(rt::gl::kBackendNames));
     app.add_option("--accel", o.accel,
@@ -108,6 +112,13 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     if (o.item_buffer && o.spp > 1) {
         std::cerr << "rtrender: command line: --item-buffer on needs --spp 1 (the item buffer "
                      "holds the pixel centres' first hits only)\n";
+        exit_code = 1;
+        return false;
+    }
+    const bool gpu = o.mode == Mode::kGpuTrace || o.with_gpu;
+    if (gpu && (o.spp > 1 || o.item_buffer)) {
+        std::cerr << "rtrender: command line: the GPU tracer traces the pixel centres only (no "
+                     "--spp above 1, no --item-buffer)\n";
         exit_code = 1;
         return false;
     }

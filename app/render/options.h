@@ -11,12 +11,13 @@
 
 namespace rt::renderer {
 
-enum class Mode { kTrace, kRaster, kBoth, kItemBuffer, kExplain };
+enum class Mode { kTrace, kRaster, kBoth, kItemBuffer, kExplain, kGpuTrace };
 inline constexpr rt::Named<Mode> kModeNames[] = {{"trace", Mode::kTrace},
                                                  {"raster", Mode::kRaster},
                                                  {"both", Mode::kBoth},
                                                  {"itembuffer", Mode::kItemBuffer},
-                                                 {"explain", Mode::kExplain}};
+                                                 {"explain", Mode::kExplain},
+                                                 {"gputrace", Mode::kGpuTrace}};
 
 struct Options {
     std::string scene;
@@ -29,6 +30,7 @@ struct Options {
     std::string up = "y";       // a bare mesh's up axis (rt::LoadOptions)
     std::optional<int> camera;  // a glTF file's camera (rt::LoadOptions)
     bool item_buffer = false;
+    bool with_gpu = false;  // --mode both: the GPU-traced image too (OUT.gputrace.png)
     int threads = 0;
     int spp = 1;               // traced samples per pixel (a square number)
     int msaa = 1;              // raster samples per pixel (1, 2, 4 or 8)

@@ -13,6 +13,7 @@
 
 #include "app/common/size_arg.h"
 #include "app/gl/context.h"
+#include "app/gl/gpu_tracer.h"
 #include "app/gl/raster_renderer.h"
 #include "app/render/options.h"
 #include "app/render/progress.h"
@@ -54,11 +55,14 @@ class Job {
     int run();
 
   private:
+    rt::gl::Context& context();
     rt::gl::RasterRenderer& raster();
+    rt::Image gpu_trace();
     rt::Image trace();
     rt::Image render_traced(const rt::ItemBuffer* item_buffer, rt::RenderStats& stats,
                             const char* label);
-    void report_diff(const rt::Image& raster_image, const rt::Image& traced);
+    void report_diff(const rt::Image& raster_image, const rt::Image& traced,
+                     const char* part = "diff", const char* what = "raster vs traced");
     void explain(bool write_map);
     void write_stats();
     int ray_tree();
@@ -72,11 +76,18 @@ class Job {
     std::uint64_t nonfinite_ = 0;
 };
 
-rt::gl::RasterRenderer& Job::raster() {
-    if (!raster_) {
+rt::gl::Context& Job::context() {
+    if (!context_) {
         context_ = rt::gl::create_headless_context(o_.gl, "rtrender");
         stats_["gl"] = context_->description();
         if (!o_.quiet) std::printf("OpenGL: %s\n", context_->description().c_str());
+    }
+    return *context_;
+}
+
+rt::gl::RasterRenderer& Job::raster() {
+    if (!raster_) {
+        context();
         raster_ = std::make_unique<rt::gl::RasterRenderer>(*scene_);
         raster_->set_msaa(o_.msaa);
         raster_->set_shadow_maps(o_.shadow_maps, o_.shadow_map_size);
@@ -163,11 +174,38 @@ rt::Image Job::trace() {
     return image;
 }
 
-void Job::report_diff(const rt::Image& raster_image, const rt::Image& traced) {
+// The same tracer as a compute shader: the first frame pays for compiling the shader's
+// variant; the second is what a frame costs.
+rt::Image Job::gpu_trace() {
+    context();
+    rt::gl::GpuTracer gpu;
+    const double upload = gpu.upload(*scene_);
+    rt::gl::GpuTraceTimes first, times;
+    gpu.render(scene_->camera, o_.trace, &first);
+    rt::Image image = gpu.render(scene_->camera, o_.trace, &times);
+    const double pixels = static_cast<double>(image.pixels.size());
+    stats_["gpu"] = {{"upload_seconds", upload},
+                     {"uploaded_bytes", gpu.uploaded_bytes()},
+                     {"first_dispatch_seconds", first.dispatch_s},
+                     {"dispatch_seconds", times.dispatch_s},
+                     {"readback_seconds", times.readback_s},
+                     {"primary_mrays_per_s", pixels / times.dispatch_s * 1e-6}};
+    if (!o_.quiet)
+        std::printf(
+            "GPU traced: %.4f s a frame (first %.4f s), read-back %.4f s, upload %.3f s (%.1f MiB), "
+            "%.1f M primary rays/s\n",
+            times.dispatch_s, first.dispatch_s, times.readback_s, upload,
+            static_cast<double>(gpu.uploaded_bytes()) / (1024.0 * 1024.0),
+            pixels / times.dispatch_s * 1e-6);
+    return image;
+}
+
+void Job::report_diff(const rt::Image& raster_image, const rt::Image& traced, const char* part,
+                      const char* what) {
     const rt::ImageDiff d = rt::compare_images(raster_image, traced);
     const float scale = static_cast<float>(std::max(d.max_error, 1.0 / 255.0));
-    write(rt::difference_image(raster_image, traced, scale), output_path(o_, "diff"), o_);
-    stats_["diff"] = {{"mean_abs_error", d.mean_abs_error},
+    write(rt::difference_image(raster_image, traced, scale), output_path(o_, part), o_);
+    stats_[part] = {{"mean_abs_error", d.mean_abs_error},
                       {"rms", d.rms},
                       {"psnr_db", d.identical() ? 999.0 : d.psnr_db},
                       {"identical", d.identical()},
@@ -180,11 +218,11 @@ void Job::report_diff(const rt::Image& raster_image, const rt::Image& traced) {
     char psnr[32] = "identical";
     if (!d.identical()) std::snprintf(psnr, sizeof psnr, "%.2f dB", d.psnr_db);
     std::printf(
-        "raster vs traced: mean abs error %.4f, RMS %.4f, PSNR %s, %.2f%% of pixels differ by "
+        "%s: mean abs error %.4f, RMS %.4f, PSNR %s, %.2f%% of pixels differ by "
         "more than %.0f/255 (diff scale 0 to %.3f)\n",
-        d.mean_abs_error, d.rms, psnr, 100.0 * d.share_over, d.threshold * 255.0, scale);
+        what, d.mean_abs_error, d.rms, psnr, 100.0 * d.share_over, d.threshold * 255.0, scale);
     if (d.non_finite > 0)
-        std::printf("raster vs traced: %llu pixels are NaN or infinite in one image\n",
+        std::printf("%s: %llu pixels are NaN or infinite in one image\n", what,
                     static_cast<unsigned long long>(d.non_finite));
 }
 
@@ -264,6 +302,8 @@ int Job::run() {
 
     if (o_.mode == Mode::kTrace) {
         write(trace(), main_output, o_);
+    } else if (o_.mode == Mode::kGpuTrace) {
+        write(gpu_trace(), main_output, o_);
     } else if (o_.mode == Mode::kItemBuffer) {
         write(rt::item_buffer_image(raster().render_item_buffer(scene.camera)), main_output, o_);
     } else {
@@ -289,6 +329,11 @@ int Job::run() {
             write(raster_image, output_path(o_, "raster"), o_);
             write(traced, output_path(o_, "trace"), o_);
             report_diff(raster_image, traced);
+            if (o_.with_gpu) {
+                const rt::Image gpu = gpu_trace();
+                write(gpu, output_path(o_, "gputrace"), o_);
+                report_diff(traced, gpu, "gpudiff", "CPU vs GPU traced");
+            }
             if (!o_.stats.empty()) explain(false);
         }
     }
