@@ -91,8 +91,8 @@ FlatObject flatten_object(const Scene& scene, std::uint32_t index) {
                o.shape);
     // Where the scene's origin falls in the object's checker frame, split into a float and
     // what float leaves of it, so the shader can fold it into one period (Checker::shift).
-    const glm::dvec3 p = scene.visit_shape(
-        o, [&](const auto& shape) { return shape.pattern_point(scene.origin); });
+    const glm::dvec3 p =
+        scene.visit_shape(o, [&](const auto& shape) { return shape.pattern_point(scene.origin); });
     const glm::vec3 hi(p);
     flat.pattern_hi = row(hi);
     flat.pattern_lo = row(glm::vec3(p - glm::dvec3(hi)));
@@ -133,7 +133,8 @@ FlatScene flatten(const Scene& scene, std::uint32_t max_leaf) {
     top.build(boxes, 1);
     append_tree(top, out.nodes, out.object_order);
     for (std::uint32_t& slot : out.object_order) slot = bounded[slot];
-    for (const TriangleMesh& mesh : scene.meshes) out.meshes.push_back(flatten_mesh(mesh, max_leaf, out));
+    for (const TriangleMesh& mesh : scene.meshes)
+        out.meshes.push_back(flatten_mesh(mesh, max_leaf, out));
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
         out.objects.push_back(flatten_object(scene, i));
     for (const Material& m : scene.materials) {
@@ -145,7 +146,8 @@ FlatScene flatten(const Scene& scene, std::uint32_t max_leaf) {
         }
     }
     for (const Texture& t : scene.textures) {
-        out.textures.push_back({static_cast<std::int32_t>(out.texels.size()), t.width, t.height, 0});
+        out.textures.push_back(
+            {static_cast<std::int32_t>(out.texels.size()), t.width, t.height, 0});
         for (const vec3& texel : t.texels) out.texels.push_back(row(texel));
     }
     for (const Light& l : scene.lights)
@@ -157,9 +159,9 @@ FlatScene flatten(const Scene& scene, std::uint32_t max_leaf) {
 std::size_t FlatScene::bytes() const {
     const auto size = [](const auto& v) { return v.size() * sizeof(v[0]); };
     return size(nodes) + size(object_order) + size(triangle_order) + size(unbounded) +
-           size(objects) + size(meshes) + size(vertices) + size(corner_normals) +
-           size(corner_uvs) + size(corner_colours) + size(triangle_materials) + size(materials) +
-           size(textures) + size(texels) + size(lights);
+           size(objects) + size(meshes) + size(vertices) + size(corner_normals) + size(corner_uvs) +
+           size(corner_colours) + size(triangle_materials) + size(materials) + size(textures) +
+           size(texels) + size(lights);
 }
 
 }  // namespace rt

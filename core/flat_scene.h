@@ -37,11 +37,11 @@ struct FlatObject {
 static_assert(sizeof(FlatObject) == 16 * 18);
 
 struct FlatMesh {
-    std::uint32_t root = 0;         // its tree's root in FlatScene::nodes
-    std::uint32_t triangles = 0;    // its first triangle in the per-triangle arrays
-    std::uint32_t normals = kNone;  // its first in corner_normals (3 per triangle), or kNone
-    std::uint32_t uvs = kNone;      // in corner_uvs (two rows per triangle), or kNone
-    std::uint32_t colours = kNone;  // in corner_colours (3 per triangle), or kNone
+    std::uint32_t root = 0;           // its tree's root in FlatScene::nodes
+    std::uint32_t triangles = 0;      // its first triangle in the per-triangle arrays
+    std::uint32_t normals = kNone;    // its first in corner_normals (3 per triangle), or kNone
+    std::uint32_t uvs = kNone;        // in corner_uvs (two rows per triangle), or kNone
+    std::uint32_t colours = kNone;    // in corner_colours (3 per triangle), or kNone
     std::uint32_t materials = kNone;  // in triangle_materials, or kNone
     std::uint32_t pad[2]{};
     static constexpr std::uint32_t kNone = ~0u;
@@ -53,7 +53,7 @@ struct FlatMaterial {
     glm::vec4 kd_reflectivity;
     glm::vec4 ks_transparency;
     glm::vec4 emission_ior;
-    glm::vec4 checker_a_scale;   // scale 0: no checker
+    glm::vec4 checker_a_scale;  // scale 0: no checker
     glm::vec4 checker_b;
     std::int32_t texture[4];  // index into FlatScene::textures or -1, then wrap u, wrap v
 };

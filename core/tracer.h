@@ -16,6 +16,8 @@ struct TraceOptions {
     bool refractions = true;
     int max_depth = 5;         // bounces after the primary ray
     float min_weight = 0.01f;  // a ray that adds less than this to the pixel is not cast
+
+    bool operator==(const TraceOptions&) const = default;
 };
 
 struct RayCounts {

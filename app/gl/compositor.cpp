@@ -27,6 +27,7 @@ void Compositor::set_item_palette(std::size_t object_count) {
 }
 
 Program& Compositor::program(View view, DiffMode diff_mode, bool overlay) {
+    if (view == View::kGpuTrace) view = View::kTrace;  // the same picture, another source
     return programs_.get(
         {"VIEW " + std::to_string(static_cast<int>(view)),
          "DIFF_MODE " + std::to_string(view == View::kDiff ? static_cast<int>(diff_mode) : 0),

@@ -10,8 +10,9 @@
 
 namespace rt::gl {
 
-// In the order of the keys 1 to 6 (the viewer relies on it).
-enum class View { kRaster, kTrace, kSplit, kDiff, kItemBuffer, kWhy };
+// In the order of the keys 1 to 7 (the viewer relies on it). The GPU-traced view is drawn
+// as the traced view, with the GPU tracer's image as `traced`.
+enum class View { kRaster, kTrace, kSplit, kDiff, kItemBuffer, kWhy, kGpuTrace };
 
 // How the difference view shows raster - traced (sRGB values).
 enum class DiffMode {

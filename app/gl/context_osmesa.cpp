@@ -29,7 +29,8 @@ class OsmesaContext : public Context {
             if (context_) break;
         }
         if (!context_)
-            throw std::runtime_error("OSMesaCreateContextAttribs (OpenGL 3.3 core or later) failed");
+            throw std::runtime_error(
+                "OSMesaCreateContextAttribs (OpenGL 3.3 core or later) failed");
         // OSMesa needs a buffer to be current; all rendering goes to FBOs, so 1x1 will do.
         if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
             OSMesaDestroyContext(context_);

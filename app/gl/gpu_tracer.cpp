@@ -18,8 +18,8 @@ void upload_buffer(BufferHandle& buffer, const std::vector<T>& data) {
     const std::size_t bytes = std::max<std::size_t>(sizeof(T), data.size() * sizeof(T));
     glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_STATIC_DRAW);
     if (!data.empty())
-        glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(data.size() * sizeof(T)),
-                        data.data());
+        glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0,
+                        static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data());
 }
 
 // Appends `part` to `all` and returns where it starts, in elements of `all`.
@@ -55,8 +55,9 @@ Program& GpuTracer::program_for(int max_depth) {
     const int size = stack_size(max_depth);
     auto& program = programs_[size];
     if (!program)
-        program = std::make_unique<Program>(shader_dir() / "gputrace.comp",
-                                            std::vector<std::string>{"STACK " + std::to_string(size)});
+        program =
+            std::make_unique<Program>(shader_dir() / "gputrace.comp",
+                                      std::vector<std::string>{"STACK " + std::to_string(size)});
     return *program;
 }
 
@@ -125,7 +126,8 @@ void GpuTracer::dispatch(const Camera& camera, const TraceOptions& options) {
     program.set("max_depth", options.max_depth);
     program.set("min_weight", options.min_weight);
     GLuint binding = 0;
-    for (const BufferHandle* b : {&nodes_, &words_, &rows_, &objects_, &meshes_, &materials_, &pixels_})
+    for (const BufferHandle* b :
+         {&nodes_, &words_, &rows_, &objects_, &meshes_, &materials_, &pixels_})
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding++, b->get());
     glDispatchCompute(static_cast<GLuint>((camera.cols + 7) / 8),
                       static_cast<GLuint>((camera.rows + 7) / 8), 1);

@@ -19,8 +19,8 @@
 namespace rt::gl {
 
 struct GpuTraceTimes {
-    double dispatch_s = 0.0;   // the trace itself (to glFinish)
-    double readback_s = 0.0;   // the pixels back into an rt::Image
+    double dispatch_s = 0.0;  // the trace itself (to glFinish)
+    double readback_s = 0.0;  // the pixels back into an rt::Image
 };
 
 class GpuTracer {

@@ -1,9 +1,11 @@
 #include "app/gl/program.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
+#include <span>
 #include <sstream>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -74,36 +76,34 @@ ShaderHandle compile(GLenum stage, const std::filesystem::path& file,
     return shader;
 }
 
+// The stages linked into one program; a link error names `file`.
+ProgramHandle link(std::span<const ShaderHandle> stages, const std::filesystem::path& file) {
+    ProgramHandle program(glCreateProgram());
+    for (const ShaderHandle& stage : stages) glAttachShader(program.get(), stage.get());
+    glLinkProgram(program.get());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        const std::string log = info_log(program.get(), true);
+        throw Error(file.string(), "link", log.substr(0, log.find('\n')));
+    }
+    return program;
+}
+
 }  // namespace
 
 Program::Program(const std::filesystem::path& vertex_file,
                  const std::filesystem::path& fragment_file,
                  const std::vector<std::string>& defines) {
-    const ShaderHandle vs = compile(GL_VERTEX_SHADER, vertex_file, defines);
-    const ShaderHandle fs = compile(GL_FRAGMENT_SHADER, fragment_file, defines);
-    id_ = ProgramHandle(glCreateProgram());
-    glAttachShader(id_.get(), vs.get());
-    glAttachShader(id_.get(), fs.get());
-    glLinkProgram(id_.get());
-    GLint ok = GL_FALSE;
-    glGetProgramiv(id_.get(), GL_LINK_STATUS, &ok);
-    if (!ok) {
-        const std::string log = info_log(id_.get(), true);
-        throw Error(fragment_file.string(), "link", log.substr(0, log.find('\n')));
-    }
+    const std::array<ShaderHandle, 2> stages{compile(GL_VERTEX_SHADER, vertex_file, defines),
+                                             compile(GL_FRAGMENT_SHADER, fragment_file, defines)};
+    id_ = link(stages, fragment_file);
 }
 
-Program::Program(const std::filesystem::path& compute_file, const std::vector<std::string>& defines) {
-    const ShaderHandle cs = compile(GL_COMPUTE_SHADER, compute_file, defines);
-    id_ = ProgramHandle(glCreateProgram());
-    glAttachShader(id_.get(), cs.get());
-    glLinkProgram(id_.get());
-    GLint ok = GL_FALSE;
-    glGetProgramiv(id_.get(), GL_LINK_STATUS, &ok);
-    if (!ok) {
-        const std::string log = info_log(id_.get(), true);
-        throw Error(compute_file.string(), "link", log.substr(0, log.find('\n')));
-    }
+Program::Program(const std::filesystem::path& compute_file,
+                 const std::vector<std::string>& defines) {
+    const std::array<ShaderHandle, 1> stages{compile(GL_COMPUTE_SHADER, compute_file, defines)};
+    id_ = link(stages, compute_file);
 }
 
 Program& ProgramVariants::get(const std::vector<std::string>& defines) {

@@ -52,4 +52,14 @@ void Texture::upload_row(const std::vector<vec3>& colours) {
     upload(row);
 }
 
+void Texture::upload_from_buffer(GLuint buffer, int width, int height) {
+    glBindTexture(GL_TEXTURE_2D, id_.get());
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, buffer);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    width_ = width;
+    height_ = height;
+}
+
 }  // namespace rt::gl

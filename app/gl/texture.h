@@ -18,6 +18,8 @@ class Texture {
     // A surface's texture, filtered as core/texture.h says the tracer samples it:
     // bilinear on the linear texels, level 0, its wrap modes; row 0 at t = 0.
     void upload_surface(const rt::Texture& texture);
+    // width x height RGBA32F texels from a buffer on the GPU (row 0 first), copied there.
+    void upload_from_buffer(GLuint buffer, int width, int height);
     GLuint id() const { return id_.get(); }
     int width() const { return width_; }
     int height() const { return height_; }

@@ -120,8 +120,7 @@ void Window::deliver_queued() {
             if (e.code >= 0 && e.code < static_cast<int>(buttons_down_.size()))
                 buttons_down_[static_cast<std::size_t>(e.code)] = e.action == GLFW_PRESS;
             ImGui_ImplGlfw_MouseButtonCallback(window_, e.code, e.action, e.mods);
-        }
-        else
+        } else
             ImGui_ImplGlfw_KeyCallback(window_, e.code, e.scancode, e.action, e.mods);
     }
     queued_.erase(queued_.begin(), queued_.begin() + static_cast<std::ptrdiff_t>(n));

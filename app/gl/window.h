@@ -54,8 +54,8 @@ class Window {
     };
     void deliver_queued();  // as many as may reach ImGui before its next frame, in order
     GLFWwindow* window_ = nullptr;
-    std::vector<InputEvent> queued_;   // waiting for ImGui's next frame
-    std::vector<InputEvent> changed_;  // keys and buttons changed since ImGui's last frame
+    std::vector<InputEvent> queued_;      // waiting for ImGui's next frame
+    std::vector<InputEvent> changed_;     // keys and buttons changed since ImGui's last frame
     std::array<bool, 5> buttons_down_{};  // as delivered (ImGuiMouseButton_COUNT buttons)
     std::string description_;
     bool imgui_ = false;

@@ -12,12 +12,9 @@
 namespace rt::renderer {
 
 enum class Mode { kTrace, kRaster, kBoth, kItemBuffer, kExplain, kGpuTrace };
-inline constexpr rt::Named<Mode> kModeNames[] = {{"trace", Mode::kTrace},
-                                                 {"raster", Mode::kRaster},
-                                                 {"both", Mode::kBoth},
-                                                 {"itembuffer", Mode::kItemBuffer},
-                                                 {"explain", Mode::kExplain},
-                                                 {"gputrace", Mode::kGpuTrace}};
+inline constexpr rt::Named<Mode> kModeNames[] = {
+    {"trace", Mode::kTrace},           {"raster", Mode::kRaster},   {"both", Mode::kBoth},
+    {"itembuffer", Mode::kItemBuffer}, {"explain", Mode::kExplain}, {"gputrace", Mode::kGpuTrace}};
 
 struct Options {
     std::string scene;

@@ -192,7 +192,8 @@ rt::Image Job::gpu_trace() {
                      {"primary_mrays_per_s", pixels / times.dispatch_s * 1e-6}};
     if (!o_.quiet)
         std::printf(
-            "GPU traced: %.4f s a frame (first %.4f s), read-back %.4f s, upload %.3f s (%.1f MiB), "
+            "GPU traced: %.4f s a frame (first %.4f s), read-back %.4f s, upload %.3f s (%.1f "
+            "MiB), "
             "%.1f M primary rays/s\n",
             times.dispatch_s, first.dispatch_s, times.readback_s, upload,
             static_cast<double>(gpu.uploaded_bytes()) / (1024.0 * 1024.0),
@@ -206,14 +207,14 @@ void Job::report_diff(const rt::Image& raster_image, const rt::Image& traced, co
     const float scale = static_cast<float>(std::max(d.max_error, 1.0 / 255.0));
     write(rt::difference_image(raster_image, traced, scale), output_path(o_, part), o_);
     stats_[part] = {{"mean_abs_error", d.mean_abs_error},
-                      {"rms", d.rms},
-                      {"psnr_db", d.identical() ? 999.0 : d.psnr_db},
-                      {"identical", d.identical()},
-                      {"non_finite_pixels", d.non_finite},
-                      {"max_error", d.max_error},
-                      {"threshold", d.threshold},
-                      {"share_over_threshold", d.share_over},
-                      {"scale", scale}};
+                    {"rms", d.rms},
+                    {"psnr_db", d.identical() ? 999.0 : d.psnr_db},
+                    {"identical", d.identical()},
+                    {"non_finite_pixels", d.non_finite},
+                    {"max_error", d.max_error},
+                    {"threshold", d.threshold},
+                    {"share_over_threshold", d.share_over},
+                    {"scale", scale}};
     if (o_.quiet) return;
     char psnr[32] = "identical";
     if (!d.identical()) std::snprintf(psnr, sizeof psnr, "%.2f dB", d.psnr_db);

@@ -87,6 +87,7 @@ Viewer::Viewer(const ViewerOptions& options)
     window_.init_imgui();
     compositor_ = std::make_unique<rt::gl::Compositor>();
     rays_ = std::make_unique<rt::gl::RayOverlay>();
+    init_gpu();
     settings_.max_spp = options.spp;
     glGetIntegerv(GL_MAX_SAMPLES, &max_msaa_);
     if (options.msaa > max_msaa_)
@@ -118,6 +119,7 @@ void Viewer::install(std::shared_ptr<const rt::Scene> scene, const std::string& 
     tracer_.cancel();  // the worker lets go of the old scene before it goes
     raster_ = std::move(raster);
     scene_ = std::move(scene);
+    ++scene_serial_;  // the GPU tracer uploads it when it is first shown
     scenes_.shown(path);
     controller_ = std::make_unique<CameraController>(scene_->camera, scene_->bounds());
     compositor_->set_item_palette(scene_->objects.size());
@@ -197,7 +199,10 @@ void Viewer::update_trace() {
     }
     const TraceKey key = trace_key();
     const View view = shown_view();
-    const bool on_screen = display_.flicker || (view != View::kRaster && view != View::kItemBuffer);
+    const bool gpu_only = view == View::kGpuTrace ||
+                          (view == View::kSplit && display_.split == SplitPair::kRasterGpu);
+    const bool on_screen =
+        display_.flicker || (view != View::kRaster && view != View::kItemBuffer && !gpu_only);
     // Off screen, what the tracer is doing for an older camera only slows the raster down.
     if (!on_screen && !shown_.asked_for(key)) tracer_.stop();
     std::vector<int> levels = schedule_.update(key, clock_.seconds(), on_screen);
@@ -335,7 +340,11 @@ void Viewer::draw_views(int width, int height) {
     in.diff_threshold = display_.diff_threshold;
     in.traced = traced_texture_.id();
     in.explain = explain_texture_.id();
-    if (in.view != View::kTrace && in.view != View::kItemBuffer && in.view != View::kWhy) {
+    if (in.view == View::kSplit) {
+        split_inputs(in, width, height);
+    } else if (in.view == View::kGpuTrace) {
+        in.traced = gpu_texture(trace_camera());
+    } else if (in.view != View::kTrace && in.view != View::kItemBuffer && in.view != View::kWhy) {
         const bool coarse = traced_image_.width < width || traced_image_.height < height;
         in.raster =
             raster_texture(in.view == View::kDiff && coarse
@@ -452,8 +461,15 @@ void Viewer::on_key(int key, int scancode, int action, int mods) {
         std::fflush(stdout);
     }
     if (action != GLFW_PRESS) return;
-    if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + static_cast<int>(kViewCount))
-        return set_view(kViews[key - GLFW_KEY_1].value);
+    if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + static_cast<int>(kViewCount)) {
+        const View view = kViews[key - GLFW_KEY_1].value;
+        if (view == View::kGpuTrace && !gpu_) {
+            std::printf("view: GPU traced is unavailable: %s\n", gpu_unavailable_.c_str());
+            std::fflush(stdout);
+            return;
+        }
+        return set_view(view);
+    }
     perform(action_of(key, mods));
 }
 

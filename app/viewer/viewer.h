@@ -14,6 +14,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/gl/compositor.h"
+#include "app/gl/gpu_tracer.h"
 #include "app/gl/raster_renderer.h"
 #include "app/gl/ray_overlay.h"
 #include "app/gl/texture.h"
@@ -72,13 +73,20 @@ struct FrameStats {
     double item_buffer_ms = 0.0;      // raster item-buffer pass with read-back
     FrameHistory frame_ms;            // the UI thread's frames
     FrameHistory trace_ms;            // each traced level, as it arrived
+    double gpu_ms = 0.0;              // the last GPU trace, dispatch to texture
+    int gpu_width = 0, gpu_height = 0;
+    double gpu_upload_ms = 0.0;  // the scene into the GPU tracer's buffers
 };
+
+// Which two images the split view sets side by side (left | right, before X swaps them).
+enum class SplitPair { kRasterTraced, kRasterGpu, kTracedGpu };
 
 // What is on screen and how: display only, never a reason to trace again.
 struct Display {
     View view = View::kSplit;
     float divider = 0.5f;  // of the split view, as a share of the width
-    bool swap = false;     // traced on the left
+    bool swap = false;     // the right image on the left
+    SplitPair split = SplitPair::kRasterTraced;
     bool flicker = false;  // Tab held
     bool help = false;
     bool panel = true;    // H
@@ -148,6 +156,13 @@ class Viewer {
     void log_trace_settings(const TraceKey& key);
     void collect_trace();
     void draw_views(int width, int height);
+    // The GPU tracer (app/viewer/viewer_gpu.cpp): made once, if the context can.
+    void init_gpu();
+    GLuint gpu_texture(const rt::Camera& camera);  // traced again for a new camera or settings
+    bool gpu_on_screen(View view) const;
+    void split_inputs(rt::gl::CompositeInputs& in, int width, int height);
+    std::string split_side_label(bool right) const;
+    void draw_gpu_statistics();
     GLuint raster_texture(const rt::Camera& camera);  // drawn again only for a new camera
     GLuint item_buffer_texture(const rt::Camera& camera);
     bool traced_stale() const;  // the traced image on screen is of another camera or settings
@@ -191,6 +206,12 @@ class Viewer {
     rt::gl::Texture traced_texture_;
     rt::Image traced_image_;  // what traced_texture_ holds
     rt::gl::Texture explain_texture_;
+    std::unique_ptr<rt::gl::GpuTracer> gpu_;  // none where the context has no compute shaders
+    std::string gpu_unavailable_;             // why not
+    rt::gl::Texture gpu_texture_;
+    std::optional<rt::Camera> gpu_camera_;  // what gpu_texture_ holds
+    rt::TraceOptions gpu_options_;
+    std::uint64_t scene_serial_ = 0, gpu_serial_ = 0;  // installed scenes; the one uploaded
     std::unique_ptr<rt::gl::RayOverlay> rays_;
     std::optional<Picked> picked_;
     bool pick_mode_ = false;  // the next left click picks

@@ -119,9 +119,9 @@ void Viewer::draw_overlays(int width, int height) {
     const std::string traced = traced_label();
     if (view == View::kSplit) {
         const float x = display_.divider * w;
-        const std::string raster = raster_label();
-        const char* left = display_.swap ? traced.c_str() : raster.c_str();
-        const char* right = display_.swap ? raster.c_str() : traced.c_str();
+        const std::string first = split_side_label(false), second = split_side_label(true);
+        const char* left = display_.swap ? second.c_str() : first.c_str();
+        const char* right = display_.swap ? first.c_str() : second.c_str();
         label(draw, ImVec2(x - ImGui::CalcTextSize(left).x - 12.0f, h - 30.0f), left);
         label(draw, ImVec2(x + 12.0f, h - 30.0f), right);
     } else if (view == View::kDiff) {
@@ -132,8 +132,12 @@ void Viewer::draw_overlays(int width, int height) {
               text.c_str());
     } else {
         const std::string text =
-            view == View::kRaster       ? raster_label()
-            : view == View::kTrace      ? traced
+            view == View::kRaster  ? raster_label()
+            : view == View::kTrace ? traced
+            : view == View::kGpuTrace
+                ? "GPU traced (" + std::to_string(stats_.gpu_width) + "x" +
+                      std::to_string(stats_.gpu_height) + ", " +
+                      std::to_string(static_cast<int>(stats_.gpu_ms + 0.5)) + " ms)"
             : view == View::kItemBuffer ? std::string("item buffer (object ids)")
             : traced_stale() || !explanation_
                 ? std::string("why they differ - tracing...")

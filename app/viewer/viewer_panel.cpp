@@ -145,14 +145,26 @@ void Viewer::draw_panel() {
     section("view");
     for (std::size_t i = 0; i < kViewCount; ++i) {
         const std::string label = std::to_string(i + 1) + " " + kViews[i].label;
+        const bool unavailable = kViews[i].value == View::kGpuTrace && !gpu_;
+        if (unavailable) ImGui::BeginDisabled();
         if (ImGui::RadioButton(label.c_str(), display_.view == kViews[i].value))
             set_view(kViews[i].value);
+        if (unavailable) ImGui::EndDisabled();
+        if (unavailable && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("%s", gpu_unavailable_.c_str());
         if (i % 3 != 2 && i + 1 != kViewCount) ImGui::SameLine();
     }
     ImGui::Checkbox("labels (L)", &display_.labels);
     ImGui::SameLine();
     ImGui::Checkbox("light markers", &display_.lights);
     if (display_.view == View::kSplit) {
+        const char* pairs[] = {"raster | traced", "raster | GPU traced", "traced | GPU traced"};
+        int pair = static_cast<int>(display_.split);
+        if (gpu_ && ImGui::Combo("sides", &pair, pairs, 3)) {
+            display_.split = static_cast<SplitPair>(pair);
+            std::printf("split: %s\n", pairs[pair]);
+            std::fflush(stdout);
+        }
         ImGui::Checkbox("swap sides (X)", &display_.swap);
         ImGui::SliderFloat("divider", &display_.divider, 0.0f, 1.0f, "%.3f", kClamp);
     }

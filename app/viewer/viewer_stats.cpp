@@ -32,6 +32,7 @@ void Viewer::draw_statistics() {
     else
         ImGui::TextDisabled("raster pass: not drawn in this view yet");
     ImGui::TextDisabled("(drawn again only when the camera or the size changes)");
+    draw_gpu_statistics();
     if (tracer_.busy()) ImGui::ProgressBar(tracer_.progress(), ImVec2(-1, 0), "tracing");
     if (shown_.level() == 0) {
         ImGui::TextDisabled("traced image: none yet");

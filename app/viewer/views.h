@@ -1,5 +1,5 @@
 #pragma once
-// The viewer's views, once: their order is that of the keys 1 to 6; `name` is what
+// The viewer's views, once: their order is that of the keys 1 to 7; `name` is what
 // --view takes, `label` what the panel, the help, the title bar and the log show.
 
 #include <cstddef>
@@ -20,7 +20,8 @@ inline constexpr ViewInfo kViews[] = {{"raster", rt::gl::View::kRaster, "raster"
                                       {"split", rt::gl::View::kSplit, "split"},
                                       {"diff", rt::gl::View::kDiff, "difference"},
                                       {"itembuffer", rt::gl::View::kItemBuffer, "item buffer"},
-                                      {"why", rt::gl::View::kWhy, "why"}};
+                                      {"why", rt::gl::View::kWhy, "why"},
+                                      {"gputrace", rt::gl::View::kGpuTrace, "GPU traced"}};
 inline constexpr std::size_t kViewCount = std::size(kViews);
 
 constexpr bool views_in_key_order() {

@@ -38,7 +38,9 @@ class GpuTrace : public ::testing::TestWithParam<gl::Backend> {
 
 struct Agreement {
     ImageDiff diff;
-    bool ok() const { return (diff.identical() || diff.psnr_db >= 40.0) && diff.share_over <= 0.001; }
+    bool ok() const {
+        return (diff.identical() || diff.psnr_db >= 40.0) && diff.share_over <= 0.001;
+    }
 };
 
 std::ostream& operator<<(std::ostream& os, const Agreement& a) {
@@ -62,7 +64,8 @@ Agreement agreement(const std::filesystem::path& file, int w, int h, const Trace
 
 std::vector<std::filesystem::path> shipped_scenes() {
     std::vector<std::filesystem::path> scenes;
-    for (const auto& entry : std::filesystem::directory_iterator(test::source_dir() / "assets/scenes"))
+    for (const auto& entry :
+         std::filesystem::directory_iterator(test::source_dir() / "assets/scenes"))
         if (entry.path().extension() == ".json") scenes.push_back(entry.path());
     std::sort(scenes.begin(), scenes.end());
     return scenes;
@@ -91,7 +94,8 @@ TEST_P(GpuTrace, AgreesOnTheCornersOfTheTracer) {
     for (double o : {0.0, 1e6}) {
         test::write_file(dir / ("tetra" + test::number(o) + ".obj"), test::tetra_obj(o));
         test::write_file(dir / "tetra0.obj", test::tetra_obj(0.0));
-        const auto path = test::write_file(dir / ("far" + test::number(o) + ".json"), test::far_json(o));
+        const auto path =
+            test::write_file(dir / ("far" + test::number(o) + ".json"), test::far_json(o));
         const Agreement a = agreement(path, 160, 120, TraceOptions{});
         EXPECT_TRUE(a.ok()) << "far scene at offset " << o << ": " << a;
     }

@@ -12,6 +12,7 @@ W=800 H=600
 "$rtrender" "$scene" --mode both --size ${W}x$H -q -o "$work/ref.png"
 "$rtrender" "$scene" --size ${W}x$H -q --no-shadows -o "$work/ref_noshadow.png"
 "$rtrender" "$scene" --mode explain --size ${W}x$H -q -o "$work/ref.png"
+"$rtrender" "$scene" --mode gputrace --size ${W}x$H -q -o "$work/ref.gputrace.png"
 convert "$work/ref.explain.png" -crop ${W}x$H+0+0 +repage "$work/ref.why.png"  # the legend strip off
 # Where the panel's check boxes are (its layout is fixed: ray-tracer settings first).
 SHADOWS="27 130" ITEM_BUFFER="27 153" MAX_DEPTH="120 176" RESOLUTION="120 199"
@@ -46,6 +47,12 @@ grab traced
 check "traced view shows rtrender's traced image" at_most 100 "$work/traced.png" "$work/ref.trace.png"
 check "raster and traced differ where the shadows fall" at_least 3000 "$work/ref.raster.png" "$work/ref.trace.png"
 check "  ... and so do the two views on screen" at_least 3000 "$work/raster.png" "$work/traced.png"
+# Key 7: the GPU tracer's image (a compute shader on the window's own context), the image
+# rtrender --mode gputrace makes of the view.
+after "^view: GPU traced" key 7 && settle
+grab gputraced
+check "GPU traced view shows rtrender --mode gputrace's image" at_most 100 "$work/gputraced.png" "$work/ref.gputrace.png"
+check "  ... which is the traced image" at_most 100 "$work/gputraced.png" "$work/traced.png"
 
 # Split view: drag the divider from the middle to x = 600.
 after "^view: split" key 3 && settle
