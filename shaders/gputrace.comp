@@ -5,7 +5,11 @@
 // refraction with the media a ray is inside. No recursion in GLSL: the rays still to
 // trace wait on a stack, each with the weight it adds to the pixel. Buffer layouts:
 // core/flat_scene.h and docs/gpu-tracer.md. STACK (rays waiting) is set by the host
-// from the maximum depth.
+// from the maximum depth. With RAY_QUERIES 1 it answers a list of rays instead of
+// tracing pixels (rtbench --gpu): each ray's closest hit, or whether anything blocks it.
+#ifndef RAY_QUERIES
+#define RAY_QUERIES 0
+#endif
 layout(local_size_x = 8, local_size_y = 8) in;
 
 struct Node { vec3 lo; uint first; vec3 hi; uint count; };
@@ -26,7 +30,12 @@ layout(std430, binding = 2) readonly buffer Rows { vec4 rows[]; };    // vertice
 layout(std430, binding = 3) readonly buffer Objects { Object objects[]; };
 layout(std430, binding = 4) readonly buffer Meshes { Mesh meshes[]; };
 layout(std430, binding = 5) readonly buffer Materials { Material materials[]; };
-layout(std430, binding = 6) writeonly buffer Pixels { vec4 pixels[]; };
+layout(std430, binding = 6) writeonly buffer Pixels { vec4 pixels[]; };  // or ray answers
+#if RAY_QUERIES
+// Two rows a ray: (origin, t_max), (direction, 1 for any hit); answers (t, triangle, object).
+layout(std430, binding = 7) readonly buffer Queries { vec4 queries[]; };
+uniform uint query_count;
+#endif
 
 // Where each array starts in words[] and rows[] (gpu_tracer.cpp).
 uniform uint object_order_at, triangle_order_at, unbounded_at, unbounded_count,
@@ -477,6 +486,17 @@ vec3 trace_pixel(Ray primary) {
     return colour;
 }
 
+#if RAY_QUERIES
+void main() {
+    uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u + gl_LocalInvocationIndex;
+    if (i >= query_count) return;
+    vec4 a = queries[2u * i], b = queries[2u * i + 1u];
+    Hit h = Hit(a.w, kNone, 0u, 0.0, 0.0);
+    bool hit = intersect_scene(Ray(a.xyz, b.xyz), b.w != 0.0, h);
+    pixels[i] = hit ? vec4(b.w != 0.0 ? 0.0 : h.t, uintBitsToFloat(h.prim), uintBitsToFloat(h.object), 1.0)
+                    : vec4(kInf, uintBitsToFloat(kNone), uintBitsToFloat(kNone), 0.0);
+}
+#else
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (pixel.x >= size.x || pixel.y >= size.y) return;
@@ -485,3 +505,4 @@ void main() {
     Ray r = Ray(eye, -cam_dist * cam_n + sx * cam_u + sy * cam_v);
     pixels[pixel.y * size.x + pixel.x] = vec4(trace_pixel(r), 1.0);
 }
+#endif

@@ -6,9 +6,11 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/gl/context.h"
 #include "core/accel.h"
 #include "core/mesh.h"
 #include "core/scene.h"
@@ -53,11 +55,21 @@ class Structure {
     virtual std::size_t memory_bytes() const = 0;
     virtual Result intersect(const rt::Ray& ray, float t_max) const = 0;
     virtual bool occluded(const rt::Ray& ray, float t_max) const = 0;
+    // A structure that answers a whole set at once (the GPU): answers every stride-th ray
+    // of `set` and returns the seconds the tracing itself took (the rays already up, the
+    // answers not yet read back). Nothing for those that answer a ray at a time.
+    virtual std::optional<double> trace_set(const RaySet& /*set*/, std::size_t /*stride*/,
+                                            std::vector<Result>& /*answers*/) const {
+        return std::nullopt;
+    }
 };
 
 std::unique_ptr<Structure> make_ours(rt::AccelKind kind);
 std::unique_ptr<Structure> make_embree(int threads);  // nullptr when built without Embree
 bool have_embree();
+// The GPU tracer's traversal (app/gl/gpu_tracer.h) on a headless context of `backend`:
+// throws rt::Error where there is no context or no compute shaders.
+std::unique_ptr<Structure> make_gpu(rt::gl::Backend backend);
 
 // Runs body(begin, end) over [0, count) in chunks on `threads` threads.
 void parallel_for(std::size_t count, int threads,

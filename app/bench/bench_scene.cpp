@@ -149,11 +149,12 @@ int run_scene(const SceneBenchOptions& o) {
          {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2, rt::AccelKind::kBvh})
         entries.emplace_back(make_ours(k));
     if (auto embree = make_embree(o.measure.threads)) entries.emplace_back(std::move(embree));
+    if (o.gpu) entries.emplace_back(make_gpu(o.gl));
     // The BVH makes the ray sets; a reference checks every answer, so both always run.
     const std::string reference = have_embree() ? "embree" : "brute";
     const auto wanted = [&](const Entry& e) {
         const std::string name = e.structure->name();
-        return o.only.empty() || name == "bvh" || name == reference ||
+        return o.only.empty() || name == "bvh" || name == reference || name == "gpu" ||
                std::find(o.only.begin(), o.only.end(), name) != o.only.end();
     };
     std::erase_if(entries, [&](const Entry& e) { return !wanted(e); });

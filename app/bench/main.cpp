@@ -1,5 +1,5 @@
 // rtbench: measures the acceleration structures and the item buffer.
-//   rtbench SCENE_OR_MESH [--json FILE] [--size WxH] [--threads N] [--repeats N]
+//   rtbench SCENE_OR_MESH [--json FILE] [--size WxH] [--threads N] [--repeats N] [--gpu]
 //   rtbench --sweep [--csv FILE] [--png FILE] [--counts N,N,...]
 //   rtbench --item-buffer SCENE [--json FILE] [--size WxH] [--gl egl|osmesa]
 
@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
         "rtbench: BVH, grid and brute force against Intel Embree; the item buffer's saving"};
     std::string scene, json, size = "1280x720", csv = "sweep.csv", png = "sweep.png";
     rt::gl::Backend gl = rt::gl::Backend::kAuto;
-    bool sweep = false, item_buffer = false;
+    bool sweep = false, item_buffer = false, gpu = false;
     std::vector<std::string> only;
     std::vector<int> counts{1000, 10000, 100000, 1000000};
     int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), repeats = 5;
@@ -41,7 +41,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(8, 50000000));
     app.add_option("--png", png, "--sweep: the plot (needs gnuplot)");
     app.add_flag("--item-buffer", item_buffer, "A Whitted frame with and without the item buffer");
-    app.add_option("--gl", gl, "--item-buffer: egl, osmesa or auto")
+    app.add_flag("--gpu", gpu,
+                 "Also the GPU tracer's traversal (an OpenGL 4.3 compute shader) on the same rays");
+    app.add_option("--gl", gl, "--item-buffer, --gpu: egl, osmesa or auto")
         ->transform(rt::app::cli_names(rt::gl::kBackendNames));
     try {
         app.parse(argc, argv);
@@ -76,7 +78,7 @@ int main(int argc, char** argv) {
         }
         if (item_buffer)
             return rt::bench::run_item_buffer({scene, json, w, h, threads, repeats, gl});
-        return rt::bench::run_scene({scene, only, json, w, h, measure});
+        return rt::bench::run_scene({scene, only, json, w, h, measure, gpu, gl});
     } catch (const rt::Error& e) {
         std::cerr << e.what() << '\n';
         return 1;

@@ -15,6 +15,8 @@ struct SceneBenchOptions {
     std::string json;  // empty: no JSON
     int width = 1280, height = 720;
     MeasureOptions measure;
+    bool gpu = false;  // also the GPU tracer's traversal, on a `gl` context
+    rt::gl::Backend gl = rt::gl::Backend::kAuto;
 };
 
 // Every structure on the scene's triangles; exit status 1 on a wrong answer.

@@ -95,21 +95,62 @@ double GpuTracer::upload(const Scene& scene) {
     return watch.seconds();
 }
 
-void GpuTracer::dispatch(const Camera& camera, const TraceOptions& options) {
-    if (!uploaded_) throw std::logic_error("GpuTracer::dispatch before upload");
-    const std::size_t pixels = static_cast<std::size_t>(camera.cols) * camera.rows;
-    if (pixels > pixel_capacity_) {
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, pixels_.get());
-        glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(pixels * sizeof(glm::vec4)),
-                     nullptr, GL_DYNAMIC_COPY);
-        pixel_capacity_ = pixels;
-    }
-    Program& program = program_for(options.max_depth);
+void GpuTracer::ensure_output(std::size_t count) {
+    if (count <= pixel_capacity_) return;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, pixels_.get());
+    glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(count * sizeof(glm::vec4)),
+                 nullptr, GL_DYNAMIC_COPY);
+    pixel_capacity_ = count;
+}
+
+// The scene's buffers and where its arrays start, for either program.
+void GpuTracer::bind_scene(Program& program) {
+    if (!uploaded_) throw std::logic_error("GpuTracer: a dispatch before upload");
     program.use();
     for (const auto& [name, at] : offsets_) program.set(name.c_str(), at);
     program.set("light_count", light_count_);
     program.set("unbounded_count", unbounded_count_);
     program.set("has_tree", has_tree_ ? 1 : 0);
+    GLuint binding = 0;
+    for (const BufferHandle* b :
+         {&nodes_, &words_, &rows_, &objects_, &meshes_, &materials_, &pixels_})
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding++, b->get());
+}
+
+std::vector<GpuRayAnswer> GpuTracer::trace_rays(const std::vector<glm::vec4>& rays,
+                                                GpuTraceTimes* times) {
+    const std::size_t count = rays.size() / 2;
+    if (!ray_program_)
+        ray_program_ = std::make_unique<Program>(
+            shader_dir() / "gputrace.comp", std::vector<std::string>{"STACK 8", "RAY_QUERIES 1"});
+    if (!queries_) queries_ = make_buffer();
+    upload_buffer(queries_, rays);
+    ensure_output(count);
+    bind_scene(*ray_program_);
+    ray_program_->set("query_count", static_cast<unsigned>(count));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, queries_.get());
+    glFinish();  // the rays are up: the dispatch alone is timed
+    Stopwatch watch;
+    const std::size_t groups = std::max<std::size_t>(1, (count + 63) / 64);
+    const std::size_t columns = std::min<std::size_t>(groups, 65535);
+    glDispatchCompute(static_cast<GLuint>(columns),
+                      static_cast<GLuint>((groups + columns - 1) / columns), 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glFinish();
+    const double dispatch_s = watch.lap();
+    std::vector<GpuRayAnswer> answers(count);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, pixels_.get());
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0,
+                       static_cast<GLsizeiptr>(count * sizeof(GpuRayAnswer)), answers.data());
+    check("GpuTracer::trace_rays");
+    if (times) *times = {dispatch_s, watch.seconds()};
+    return answers;
+}
+
+void GpuTracer::dispatch(const Camera& camera, const TraceOptions& options) {
+    ensure_output(static_cast<std::size_t>(camera.cols) * camera.rows);
+    Program& program = program_for(options.max_depth);
+    bind_scene(program);
     program.set("eye", camera.eye);
     program.set("cam_u", camera.u);
     program.set("cam_v", camera.v);
@@ -125,10 +166,6 @@ void GpuTracer::dispatch(const Camera& camera, const TraceOptions& options) {
     program.set("refractions", options.refractions ? 1 : 0);
     program.set("max_depth", options.max_depth);
     program.set("min_weight", options.min_weight);
-    GLuint binding = 0;
-    for (const BufferHandle* b :
-         {&nodes_, &words_, &rows_, &objects_, &meshes_, &materials_, &pixels_})
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding++, b->get());
     glDispatchCompute(static_cast<GLuint>((camera.cols + 7) / 8),
                       static_cast<GLuint>((camera.rows + 7) / 8), 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/gl/handle.h"
 #include "app/gl/program.h"
@@ -17,6 +18,13 @@
 #include "core/tracer.h"
 
 namespace rt::gl {
+
+// One ray's answer (rtbench --gpu): the closest hit's t (0 for a blocked any-hit query,
+// infinity for a miss), its triangle within its mesh and its object (~0u: none).
+struct GpuRayAnswer {
+    float t;
+    std::uint32_t prim, object, hit;
+};
 
 struct GpuTraceTimes {
     double dispatch_s = 0.0;  // the trace itself (to glFinish)
@@ -37,13 +45,21 @@ class GpuTracer {
     void dispatch(const Camera& camera, const TraceOptions& options);
     // Dispatches and reads the image back (row 0 at the bottom, linear RGB).
     Image render(const Camera& camera, const TraceOptions& options, GpuTraceTimes* times = nullptr);
+    // Rays, two rows each: (origin, t_max), (direction, 1 for an any-hit query). The rays
+    // go up first (not timed in dispatch_s); returns the answers.
+    std::vector<GpuRayAnswer> trace_rays(const std::vector<glm::vec4>& rays, GpuTraceTimes* times);
     // The output buffer of the last dispatch: width x height vec4s, row 0 at the bottom.
     GLuint pixel_buffer() const { return pixels_.get(); }
 
   private:
     Program& program_for(int max_depth);
 
+    void bind_scene(Program& program);
+    void ensure_output(std::size_t count);
+
     std::map<int, std::unique_ptr<Program>> programs_;  // by stack size
+    std::unique_ptr<Program> ray_program_;              // RAY_QUERIES
+    BufferHandle queries_;
     BufferHandle nodes_, words_, rows_, objects_, meshes_, materials_, pixels_;
     std::size_t pixel_capacity_ = 0;
     std::map<std::string, unsigned> offsets_;  // where each array starts in words_ and rows_

@@ -20,6 +20,15 @@ check "  ... naming it" grep -q "WRONG: grid" "$out/fault.log"
 RTBENCH_FAULT=bvh "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only bvh >"$out/fault_bvh.log" 2>&1
 check "  ... the wide BVH too" grep -q "WRONG: bvh" "$out/fault_bvh.log"
 
+# The GPU tracer's traversal (a compute shader) on the same rays, on both contexts.
+for gl in egl osmesa; do
+    "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only bvh --gpu --gl $gl >"$out/gpu_$gl.log" 2>&1
+    check "--gpu --gl $gl: the GPU agrees with the references (exit 0)" test $? -eq 0
+    check "  ... in a row of its own" grep -q "^gpu " "$out/gpu_$gl.log"
+done
+RTBENCH_FAULT=gpu "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only bvh --gpu >"$out/fault_gpu.log" 2>&1
+check "  ... and wrong GPU answers fail, naming it" grep -q "WRONG: gpu" "$out/fault_gpu.log"
+
 "$rtbench" --sweep --counts 200,2000 --repeats 1 --csv "$out/sweep.csv" --png "$out/sweep.png" >"$out/sweep.log" 2>&1
 check "sweep runs" test $? -eq 0
 check "  ... and writes a row per count and structure" test "$(grep -c '^[0-9]' "$out/sweep.csv")" -ge 8
