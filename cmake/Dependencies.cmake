@@ -2,10 +2,13 @@
 find_package(Threads REQUIRED)
 find_package(glm CONFIG REQUIRED)
 find_package(nlohmann_json 3.10 CONFIG REQUIRED)
+find_package(CLI11 CONFIG REQUIRED)
+if(RTVIEW_PORTABLE_BENCH)  # rtbench alone, with none of the libraries below
+  return()
+endif()
 find_package(tinyobjloader CONFIG REQUIRED)
 find_package(TinyGLTF CONFIG REQUIRED)
 find_package(assimp CONFIG REQUIRED)
-find_package(CLI11 CONFIG REQUIRED)
 find_package(OpenImageIO CONFIG REQUIRED)
 
 # Debian's OpenImageIO config names /usr/include/opencv4 as an include directory,

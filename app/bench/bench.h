@@ -10,10 +10,13 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
 #include "app/gl/context.h"
+
 #include "core/accel.h"
 #include "core/mesh.h"
 #include "core/scene.h"
+#include "core/tracer.h"
 
 namespace rt::bench {
 
@@ -70,6 +73,12 @@ bool have_embree();
 // The GPU tracer's traversal (app/gl/gpu_tracer.h) on a headless context of `backend`:
 // throws rt::Error where there is no context or no compute shaders.
 std::unique_ptr<Structure> make_gpu(rt::gl::Backend backend);
+// A whole frame of the scene (not its triangles alone: spheres, planes, materials) traced
+// by the GPU tracer at `camera`, on the current context: the median of `repeats`
+// dispatches after a warm-up, and how far its image is from the CPU tracer's (on
+// `threads` threads), as JSON and printed.
+nlohmann::json time_gpu_frame(const rt::SceneDescription& scene, const rt::Camera& camera,
+                              const rt::TraceOptions& options, int repeats, int threads);
 
 // Runs body(begin, end) over [0, count) in chunks on `threads` threads.
 void parallel_for(std::size_t count, int threads,

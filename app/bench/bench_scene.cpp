@@ -193,6 +193,9 @@ int run_scene(const SceneBenchOptions& o) {
     for (const RaySet& set : sets) report["ray_counts"][set.name] = set.rays.size();
     print_table(entries, sets, mesh.triangles.size(), report);
     const bool ok = check(entries, sets, mesh, report);
+    if (o.gpu)  // the GPU entry's context is current
+        report["gpu_frame"] =
+            time_gpu_frame(loaded.scene, camera, o.gpu_frame, o.measure.repeats, o.measure.threads);
     std::printf("answers: %s\n",
                 ok ? "every structure agrees with the references" : "WRONG ANSWERS (see above)");
     if (!o.json.empty()) {

@@ -2,6 +2,8 @@
 // more structure, on the same triangles and rays as the others and checked like them.
 #include "app/bench/bench.h"
 #include "app/gl/gpu_tracer.h"
+#include "core/compare.h"
+#include "core/renderer.h"
 #include "core/stopwatch.h"
 
 namespace rt::bench {
@@ -67,6 +69,47 @@ class Gpu : public Structure {
 
 std::unique_ptr<Structure> make_gpu(rt::gl::Backend backend) {
     return std::make_unique<Gpu>(backend);
+}
+
+nlohmann::json time_gpu_frame(const rt::SceneDescription& description, const rt::Camera& camera,
+                              const rt::TraceOptions& options, int repeats, int threads) {
+    rt::SceneDescription d = description;
+    d.camera = camera;
+    const rt::Scene scene(std::move(d), rt::AccelKind::kBrute);  // the GPU builds its own
+    rt::gl::GpuTracer tracer;
+    const double upload = tracer.upload(scene);
+    rt::gl::GpuTraceTimes times;
+    tracer.render(camera, options, &times);  // warm-up: the program's variant, the caches
+    std::vector<double> seconds;
+    for (int k = 0; k < repeats; ++k) {
+        tracer.render(camera, options, &times);
+        seconds.push_back(times.dispatch_s);
+    }
+    const double s = median(seconds);
+    // The same frame from the CPU tracer: the GPU's image must be the same picture.
+    rt::RenderOptions cpu;
+    cpu.trace = options;
+    cpu.threads = threads;
+    const rt::ImageDiff diff =
+        rt::compare_images(rt::render(scene, cpu), tracer.render(camera, options));
+    std::printf(
+        "gpu frame: %dx%d, shadows %s, max depth %d: %.2f ms median of %d (%.0f frames/s), "
+        "%.1f M primary rays/s; scene upload %.3f s\n",
+        camera.cols, camera.rows, options.shadows ? "on" : "off", options.max_depth, 1e3 * s,
+        repeats, 1.0 / s, static_cast<double>(camera.cols) * camera.rows / s * 1e-6, upload);
+    std::printf(
+        "gpu frame against the CPU tracer's: PSNR %.1f dB, %.4f %% of pixels differ by more "
+        "than 2/255\n",
+        diff.identical() ? 999.0 : diff.psnr_db, 100.0 * diff.share_over);
+    return {{"width", camera.cols},
+            {"height", camera.rows},
+            {"max_depth", options.max_depth},
+            {"shadows", options.shadows},
+            {"dispatch_seconds", s},
+            {"frames_per_s", 1.0 / s},
+            {"upload_seconds", upload},
+            {"psnr_db_against_cpu", diff.identical() ? 999.0 : diff.psnr_db},
+            {"share_over_2_255_against_cpu", diff.share_over}};
 }
 
 }  // namespace rt::bench

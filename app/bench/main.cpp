@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     std::string scene, json, size = "1280x720", csv = "sweep.csv", png = "sweep.png";
     rt::gl::Backend gl = rt::gl::Backend::kAuto;
     bool sweep = false, item_buffer = false, gpu = false;
+    rt::TraceOptions gpu_frame;
     std::vector<std::string> only;
     std::vector<int> counts{1000, 10000, 100000, 1000000};
     int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), repeats = 5;
@@ -43,6 +44,9 @@ int main(int argc, char** argv) {
     app.add_flag("--item-buffer", item_buffer, "A Whitted frame with and without the item buffer");
     app.add_flag("--gpu", gpu,
                  "Also the GPU tracer's traversal (an OpenGL 4.3 compute shader) on the same rays");
+    app.add_option("--max-depth", gpu_frame.max_depth,
+                   "--gpu: the bounces of the GPU-traced frame of the whole scene (default 5)")
+        ->check(CLI::Range(0, 64));
     app.add_option("--gl", gl, "--item-buffer, --gpu: egl, osmesa or auto")
         ->transform(rt::app::cli_names(rt::gl::kBackendNames));
     try {
@@ -78,7 +82,7 @@ int main(int argc, char** argv) {
         }
         if (item_buffer)
             return rt::bench::run_item_buffer({scene, json, w, h, threads, repeats, gl});
-        return rt::bench::run_scene({scene, only, json, w, h, measure, gpu, gl});
+        return rt::bench::run_scene({scene, only, json, w, h, measure, gpu, gpu_frame, gl});
     } catch (const rt::Error& e) {
         std::cerr << e.what() << '\n';
         return 1;

@@ -5,6 +5,7 @@
 
 #include "app/bench/measure.h"
 #include "app/gl/context.h"
+#include "core/tracer.h"
 
 namespace rt::bench {
 
@@ -15,7 +16,8 @@ struct SceneBenchOptions {
     std::string json;  // empty: no JSON
     int width = 1280, height = 720;
     MeasureOptions measure;
-    bool gpu = false;  // also the GPU tracer's traversal, on a `gl` context
+    bool gpu = false;            // also the GPU tracer's traversal, on a `gl` context, and a frame
+    rt::TraceOptions gpu_frame;  // of the whole scene traced so
     rt::gl::Backend gl = rt::gl::Backend::kAuto;
 };
 

@@ -1,0 +1,3 @@
+// The portable build compiles tinyobjloader in (Debian's is a shared library).
+#define TINYOBJLOADER_IMPLEMENTATION
+#include <tiny_obj_loader.h>
