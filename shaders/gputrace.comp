@@ -147,20 +147,20 @@ bool watertight(vec3 va, vec3 vb, vec3 vc, Sheared r, float t_max, out float t, 
 
 // A mesh's tree, near child first; with any_hit the first hit ends the walk.
 bool intersect_mesh(uint mesh_index, Ray r, bool any_hit, inout Hit h) {
-    Mesh mesh = meshes[mesh_index];
+    uint root = meshes[mesh_index].root, first_triangle = meshes[mesh_index].triangles;
     if (!finite_ray(r)) return false;
     vec3 inv_dir = 1.0 / r.d;
-    if (slab_entry(nodes[mesh.root].lo, nodes[mesh.root].hi, r, inv_dir, h.t) == kInf) return false;
+    if (slab_entry(nodes[root].lo, nodes[root].hi, r, inv_dir, h.t) == kInf) return false;
     Sheared s = shear(r);
     uint stack[64]; float entry[64];
     int top = 0;
-    uint index = mesh.root;
+    uint index = root;
     bool found = false;
     for (;;) {
         Node node = nodes[index];
         if (node.count != 0u) {
             for (uint slot = node.first; slot < node.first + node.count; ++slot) {
-                uint tri = words[triangle_order_at + slot], at = vertices_at + 3u * (mesh.triangles + tri);
+                uint tri = words[triangle_order_at + slot], at = vertices_at + 3u * (first_triangle + tri);
                 float t, b1, b2;
                 if (watertight(rows[at].xyz, rows[at + 1u].xyz, rows[at + 2u].xyz, s, h.t, t, b1, b2)) {
                     h.t = t; h.prim = tri; h.b1 = b1; h.b2 = b2;
@@ -187,22 +187,24 @@ bool intersect_mesh(uint mesh_index, Ray r, bool any_hit, inout Hit h) {
     return found;
 }
 
-Ray object_ray(Object o, Ray r) {
-    if ((o.flags & kTransformed) == 0u) return r;
-    return Ray((o.to_object * vec4(r.o, 1.0)).xyz, (o.to_object * vec4(r.d, 0.0)).xyz);
+// The ray in object i's space (fields read one by one: a whole Object is 288 bytes).
+Ray object_ray(uint i, Ray r) {
+    if ((objects[i].flags & kTransformed) == 0u) return r;
+    mat4 m = objects[i].to_object;
+    return Ray((m * vec4(r.o, 1.0)).xyz, (m * vec4(r.d, 0.0)).xyz);
 }
 
 // One object: on a hit, h is replaced (t, triangle, barycentrics) and true returned.
 bool intersect_object(uint i, Ray world, bool any_hit, inout Hit h) {
-    Object o = objects[i];
-    Ray r = object_ray(o, world);
+    Ray r = object_ray(i, world);
+    uint kind = objects[i].kind;
     float t;
     bool hit = false;
-    if (o.kind == kSphere) hit = sphere_t(o.shape[0], r, h.t, t);
-    else if (o.kind == kPlane) hit = plane_t(o.shape[0], r, h.t, t);
-    else if (o.kind == kTriangle) hit = triangle_t(o.shape[0].xyz, o.shape[1].xyz, o.shape[2].xyz, r, h);
-    else hit = intersect_mesh(o.mesh, r, any_hit, h);
-    if (hit && o.kind <= kPlane) h = Hit(t, i, 0u, 0.0, 0.0);  // nothing of a mesh hit stays
+    if (kind == kSphere) hit = sphere_t(objects[i].shape[0], r, h.t, t);
+    else if (kind == kPlane) hit = plane_t(objects[i].shape[0], r, h.t, t);
+    else if (kind == kTriangle) hit = triangle_t(objects[i].shape[0].xyz, objects[i].shape[1].xyz, objects[i].shape[2].xyz, r, h);
+    else hit = intersect_mesh(objects[i].mesh, r, any_hit, h);
+    if (hit && kind <= kPlane) h = Hit(t, i, 0u, 0.0, 0.0);  // nothing of a mesh hit stays
     if (hit) h.object = i;
     return hit;
 }
@@ -271,7 +273,7 @@ vec3 corners(uint at, float b1, float b2) {
 
 Surface surface(Ray world, Hit h) {
     Object o = objects[h.object];
-    Ray r = object_ray(o, world);
+    Ray r = object_ray(h.object, world);
     Surface s = Surface(vec3(0.0), vec3(0.0), vec3(0.0), o.material, vec3(0.0), vec2(0.0), vec3(1.0));
     if (o.kind == kSphere) {
         vec3 n = normalize(r.o + h.t * r.d - o.shape[0].xyz);

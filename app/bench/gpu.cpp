@@ -75,7 +75,7 @@ nlohmann::json time_gpu_frame(const rt::SceneDescription& description, const rt:
                               const rt::TraceOptions& options, int repeats, int threads) {
     rt::SceneDescription d = description;
     d.camera = camera;
-    const rt::Scene scene(std::move(d), rt::AccelKind::kBrute);  // the GPU builds its own
+    const rt::Scene scene(std::move(d));  // the CPU's structures too: it renders the frame
     rt::gl::GpuTracer tracer;
     const double upload = tracer.upload(scene);
     rt::gl::GpuTraceTimes times;

@@ -14,6 +14,7 @@
 #include "core/error.h"
 
 int main(int argc, char** argv) {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line out at once, also into a pipe
     CLI::App app{
         "rtbench: BVH, grid and brute force against Intel Embree; the item buffer's saving"};
     std::string scene, json, size = "1280x720", csv = "sweep.csv", png = "sweep.png";
