@@ -272,24 +272,24 @@ vec3 corners(uint at, float b1, float b2) {
 }
 
 Surface surface(Ray world, Hit h) {
-    Object o = objects[h.object];
+    uint oi = h.object;  // its fields read one by one
     Ray r = object_ray(h.object, world);
-    Surface s = Surface(vec3(0.0), vec3(0.0), vec3(0.0), o.material, vec3(0.0), vec2(0.0), vec3(1.0));
-    if (o.kind == kSphere) {
-        vec3 n = normalize(r.o + h.t * r.d - o.shape[0].xyz);
-        s.p = o.shape[0].xyz + o.shape[0].w * n; s.ng = s.n = n; s.pattern = s.p;
-    } else if (o.kind == kPlane) {
-        vec3 n = o.shape[0].xyz, p = r.o + h.t * r.d, t1, t2;
-        p -= (dot(p, n) - o.shape[0].w) * n;
+    Surface s = Surface(vec3(0.0), vec3(0.0), vec3(0.0), objects[oi].material, vec3(0.0), vec2(0.0), vec3(1.0));
+    if (objects[oi].kind == kSphere) {
+        vec3 n = normalize(r.o + h.t * r.d - objects[oi].shape[0].xyz);
+        s.p = objects[oi].shape[0].xyz + objects[oi].shape[0].w * n; s.ng = s.n = n; s.pattern = s.p;
+    } else if (objects[oi].kind == kPlane) {
+        vec3 n = objects[oi].shape[0].xyz, p = r.o + h.t * r.d, t1, t2;
+        p -= (dot(p, n) - objects[oi].shape[0].w) * n;
         s.p = p; s.ng = s.n = n;
         tangent_frame(n, t1, t2);
         s.pattern = vec3(dot(p, t1), dot(p, t2), 0.0);
-    } else if (o.kind == kTriangle) {
-        vec3 a = o.shape[0].xyz, b = o.shape[1].xyz, c = o.shape[2].xyz;
+    } else if (objects[oi].kind == kTriangle) {
+        vec3 a = objects[oi].shape[0].xyz, b = objects[oi].shape[1].xyz, c = objects[oi].shape[2].xyz;
         s.p = (1.0 - h.b1 - h.b2) * a + h.b1 * b + h.b2 * c; s.ng = s.n = cross(b - a, c - a);
         s.pattern = s.p;
     } else {
-        Mesh m = meshes[o.mesh];
+        Mesh m = meshes[objects[oi].mesh];
         uint tri = m.triangles + h.prim, at = vertices_at + 3u * tri;
         s.p = corners(at, h.b1, h.b2);
         s.ng = cross(rows[at + 1u].xyz - rows[at].xyz, rows[at + 2u].xyz - rows[at].xyz);
@@ -299,19 +299,19 @@ Surface surface(Ray world, Hit h) {
             s.uv = (1.0 - h.b1 - h.b2) * rows[u].xy + h.b1 * rows[u].zw + h.b2 * rows[u + 1u].xy;
         }
         if (m.colours != kNone) s.colour = corners(colours_at + 3u * (m.colours + h.prim), h.b1, h.b2);
-        if ((o.flags & kOwnMaterials) != 0u && m.materials != kNone)
+        if ((objects[oi].flags & kOwnMaterials) != 0u && m.materials != kNone)
             s.material = words[triangle_materials_at + m.materials + h.prim];
         s.pattern = s.p;
     }
     float scale = materials[s.material].checker_a_scale.w;
-    if ((o.flags & kTransformed) == 0u && scale > 0.0) {  // Checker::shift of the origin
+    if ((objects[oi].flags & kTransformed) == 0u && scale > 0.0) {  // Checker::shift of the origin
         float period = 2.0 * scale;
-        s.pattern += mod(mod(o.pattern_hi.xyz, period) + mod(o.pattern_lo.xyz, period), period);
+        s.pattern += mod(mod(objects[oi].pattern_hi.xyz, period) + mod(objects[oi].pattern_lo.xyz, period), period);
     }
-    if ((o.flags & kTransformed) != 0u) {
-        s.p = (o.to_world * vec4(s.p, 1.0)).xyz;
-        s.ng = normalize(mat3(o.normal_matrix) * s.ng);
-        s.n = normalize(mat3(o.normal_matrix) * s.n);
+    if ((objects[oi].flags & kTransformed) != 0u) {
+        s.p = (objects[oi].to_world * vec4(s.p, 1.0)).xyz;
+        s.ng = normalize(mat3(objects[oi].normal_matrix) * s.ng);
+        s.n = normalize(mat3(objects[oi].normal_matrix) * s.n);
     } else {
         s.ng = normalize(s.ng); s.n = normalize(s.n);
     }
@@ -418,7 +418,7 @@ struct Pending {
     Ray ray; float weight; int depth;
     uint media_object[kMedia]; float media_ior[kMedia]; int media_size;
 };
-Pending stack[STACK];
+Pending stack[STACK];  // refracted rays waiting while their reflected sibling is traced
 int stack_top = 0;
 
 void push(Pending p) { if (stack_top < STACK) stack[stack_top++] = p; }
@@ -447,43 +447,50 @@ vec2 cross_medium(inout Pending p, uint object, float object_ior) {
     return vec2(eta_from, eta_from);  // overlapping glass: straight on
 }
 
+// Depth first, the ray being traced kept out of the stack: a hit carries on with its
+// reflected ray (or its refracted one where there is no reflection) and pushes the
+// refracted ray only when it has both.
 vec3 trace_pixel(Ray primary) {
-    Pending first;
-    first.ray = primary; first.weight = 1.0; first.depth = 0; first.media_size = 0;
-    push(first);
+    Pending e;
+    e.ray = primary; e.weight = 1.0; e.depth = 0; e.media_size = 0;
     vec3 colour = vec3(0.0);
-    while (stack_top > 0) {
-        Pending e = stack[--stack_top];
+    for (;;) {
         Hit h = Hit(kInf, kNone, 0u, 0.0, 0.0);
-        if (!intersect_scene(e.ray, false, h)) { colour += e.weight * background; continue; }
-        Surface s = surface(e.ray, h);
-        Material m = materials[s.material];
-        colour += e.weight * phong(e.ray, s, m);
-        if (e.depth >= max_depth) continue;
-        vec3 d = normalize(e.ray.d);
-        vec3 mirror_dir = d - 2.0 * dot(d, s.n) * s.n;
-        float reflectivity = m.kd_reflectivity.w, transparency = m.ks_transparency.w;
-        if (reflections && reflectivity * e.weight >= min_weight) {
-            Pending next = e;
-            next.ray = Ray(offset_ray_origin(s.p, s.ng), mirror_dir);
-            next.weight = e.weight * reflectivity; next.depth = e.depth + 1;
-            push(next);
-        }
-        if (refractions && transparency * e.weight >= min_weight) {
-            Pending next = e;
-            next.weight = e.weight * transparency; next.depth = e.depth + 1;
-            vec2 eta = cross_medium(next, h.object, m.emission_ior.w);
-            float ratio = eta.x / eta.y, cos_i = -dot(d, s.n);
-            float sin2_t = ratio * ratio * max(0.0, 1.0 - cos_i * cos_i);
-            if (sin2_t > 1.0) {  // total internal reflection: the media stay as they were
-                next.media_size = e.media_size;
-                next.media_object = e.media_object; next.media_ior = e.media_ior;
-                next.ray = Ray(offset_ray_origin(s.p, s.ng), mirror_dir);
-            } else {
-                next.ray = Ray(offset_ray_origin(s.p, -s.ng), ratio * d + (ratio * cos_i - sqrt(1.0 - sin2_t)) * s.n);
+        if (!intersect_scene(e.ray, false, h)) {
+            colour += e.weight * background;
+        } else {
+            Surface s = surface(e.ray, h);
+            Material m = materials[s.material];
+            colour += e.weight * phong(e.ray, s, m);
+            float reflectivity = m.kd_reflectivity.w, transparency = m.ks_transparency.w;
+            bool reflect = e.depth < max_depth && reflections && reflectivity * e.weight >= min_weight;
+            bool refract = e.depth < max_depth && refractions && transparency * e.weight >= min_weight;
+            vec3 d = normalize(e.ray.d);
+            vec3 mirror_dir = d - 2.0 * dot(d, s.n) * s.n;
+            if (refract) {
+                Pending next = e;
+                next.weight = e.weight * transparency; next.depth = e.depth + 1;
+                vec2 eta = cross_medium(next, h.object, m.emission_ior.w);
+                float ratio = eta.x / eta.y, cos_i = -dot(d, s.n);
+                float sin2_t = ratio * ratio * max(0.0, 1.0 - cos_i * cos_i);
+                if (sin2_t > 1.0) {  // total internal reflection: the media stay as they were
+                    next.media_size = e.media_size;
+                    next.media_object = e.media_object; next.media_ior = e.media_ior;
+                    next.ray = Ray(offset_ray_origin(s.p, s.ng), mirror_dir);
+                } else {
+                    next.ray = Ray(offset_ray_origin(s.p, -s.ng), ratio * d + (ratio * cos_i - sqrt(1.0 - sin2_t)) * s.n);
+                }
+                if (!reflect) { e = next; continue; }
+                push(next);
             }
-            push(next);
+            if (reflect) {
+                e.ray = Ray(offset_ray_origin(s.p, s.ng), mirror_dir);
+                e.weight *= reflectivity; e.depth += 1;
+                continue;
+            }
         }
+        if (stack_top == 0) break;
+        e = stack[--stack_top];
     }
     return colour;
 }
