@@ -133,10 +133,8 @@ Texture texture_from(OIIO::ImageInput& in, const std::string& name, const std::s
     return t;
 }
 
-}  // namespace
-
-Texture read_texture(const std::filesystem::path& path, const std::string& file,
-                     const std::string& where) {
+Texture read_texture_file(const std::filesystem::path& path, const std::string& file,
+                          const std::string& where) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(file, where, "no image file \"" + path.string() + "\"");
@@ -149,13 +147,20 @@ Texture read_texture(const std::filesystem::path& path, const std::string& file,
     return texture_from(*in, path.string(), file, where);
 }
 
-Texture decode_texture(const std::vector<unsigned char>& bytes, const std::string& extension,
-                       const std::string& file, const std::string& where) {
+Texture decode_texture_bytes(const std::vector<unsigned char>& bytes, const std::string& extension,
+                             const std::string& file, const std::string& where) {
     const QuietStderr quiet;
     OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
     auto in = OIIO::ImageInput::open("image" + extension, nullptr, &reader);
     if (!in) throw Error(file, where, "cannot decode the image: " + last_line(OIIO::geterror()));
     return texture_from(*in, file + ": " + where, file, where);
 }
+
+// Linked into a program (rt_image_io is an object library), this installs the reader
+// before main() runs.
+const bool kReaderInstalled =
+    (install_image_reader({&read_texture_file, &decode_texture_bytes}), true);
+
+}  // namespace
 
 }  // namespace rt

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
+
 namespace rt {
 
 int wrap_texel(int i, int size, Wrap mode) {
@@ -39,6 +41,34 @@ vec3 Texture::sample(glm::vec2 uv) const {
     const vec3 top = (1.0f - ax) * at(xa, ya) + ax * at(xb, ya);
     const vec3 bottom = (1.0f - ax) * at(xa, yb) + ax * at(xb, yb);
     return (1.0f - ay) * top + ay * bottom;
+}
+
+namespace {
+
+ImageReader& image_reader() {
+    static ImageReader reader;  // set before main() by rt_image_io, when linked
+    return reader;
+}
+
+[[noreturn]] void no_image_reader(const std::string& file, const std::string& where) {
+    throw Error(file, where,
+                "this program reads no image files (textures): it is built without rt_image_io");
+}
+
+}  // namespace
+
+void install_image_reader(const ImageReader& reader) { image_reader() = reader; }
+
+Texture read_texture(const std::filesystem::path& path, const std::string& file,
+                     const std::string& where) {
+    if (!image_reader().read) no_image_reader(file, where);
+    return image_reader().read(path, file, where);
+}
+
+Texture decode_texture(const std::vector<unsigned char>& bytes, const std::string& extension,
+                       const std::string& file, const std::string& where) {
+    if (!image_reader().decode) no_image_reader(file, where);
+    return image_reader().decode(bytes, extension, file, where);
 }
 
 }  // namespace rt

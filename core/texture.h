@@ -33,12 +33,23 @@ struct Texture {
 // A texel index wrapped into [0, size).
 int wrap_texel(int i, int size, Wrap mode);
 
-// Image files through OpenImageIO (core/image_io.cpp). Errors are rt::Error naming
-// `file` (the scene or mesh file that refers to the image) and `where` in it.
+// Image files as textures, through the reader a program is linked with: rt_image_io
+// (core/image_io.cpp, OpenImageIO) installs its own; a program without it (rtbench, which
+// needs geometry only) reads none, and a texture there is one located line saying so.
+// Errors are rt::Error naming `file` (the scene or mesh file that refers to the image)
+// and `where` in it.
 Texture read_texture(const std::filesystem::path& path, const std::string& file,
                      const std::string& where);
 // An image held in memory (a .glb's or a data URI's), of the format `extension` names.
 Texture decode_texture(const std::vector<unsigned char>& bytes, const std::string& extension,
                        const std::string& file, const std::string& where);
+
+struct ImageReader {
+    Texture (*read)(const std::filesystem::path& path, const std::string& file,
+                    const std::string& where) = nullptr;
+    Texture (*decode)(const std::vector<unsigned char>& bytes, const std::string& extension,
+                      const std::string& file, const std::string& where) = nullptr;
+};
+void install_image_reader(const ImageReader& reader);
 
 }  // namespace rt

@@ -12,9 +12,30 @@
 #include "app/common/cli_names.h"
 #include "app/common/size_arg.h"
 #include "core/error.h"
+#include "core/texture.h"
+
+namespace {
+
+// rtbench measures geometry and never links an image library (it must run where there
+// is a GPU driver and nothing else): a scene's textures are read as plain white.
+rt::Texture white_texture() {
+    rt::Texture t;
+    t.name = "white (rtbench reads no images)";
+    t.width = t.height = 1;
+    t.texels = {rt::vec3(1.0f)};
+    return t;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line out at once, also into a pipe
+    rt::install_image_reader(
+        {[](const std::filesystem::path&, const std::string&, const std::string&) {
+             return white_texture();
+         },
+         [](const std::vector<unsigned char>&, const std::string&, const std::string&,
+            const std::string&) { return white_texture(); }});
     CLI::App app{
         "rtbench: BVH, grid and brute force against Intel Embree; the item buffer's saving"};
     std::string scene, json, size = "1280x720", csv = "sweep.csv", png = "sweep.png";

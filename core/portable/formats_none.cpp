@@ -5,7 +5,6 @@
 #include "core/error.h"
 #include "core/gltf_loader.h"
 #include "core/image.h"
-#include "core/texture.h"
 
 namespace rt {
 namespace {
@@ -22,16 +21,6 @@ void write_image(const Image&, const std::filesystem::path& path) {
 
 Image read_image(const std::filesystem::path& path) {
     throw Error(path.string(), "image", std::string(kWhy) + "image files");
-}
-
-Texture read_texture(const std::filesystem::path& path, const std::string& file,
-                     const std::string& where) {
-    throw Error(file, where, std::string(kWhy) + "image files (\"" + path.string() + "\")");
-}
-
-Texture decode_texture(const std::vector<unsigned char>&, const std::string&,
-                       const std::string& file, const std::string& where) {
-    throw Error(file, where, std::string(kWhy) + "image files");
 }
 
 GltfScene load_gltf(const std::filesystem::path& path, const MeshFileOptions&) {
