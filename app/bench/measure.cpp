@@ -16,6 +16,20 @@ bool faulty(const Structure& s) {
     return name && s.name() == name;
 }
 
+// The median pass as a timing (and, for RTBENCH_FAULT's structure, every 50th answer
+// spoiled, so that the check must catch it).
+SetTiming timing(const Structure& s, std::vector<double> seconds, std::size_t count,
+                 std::size_t stride, std::vector<Result>& answers) {
+    if (faulty(s))
+        for (std::size_t i = 0; i < answers.size(); i += 50) answers[i] = Result{};
+    SetTiming t;
+    t.seconds = median(std::move(seconds));
+    t.rays = count;
+    t.stride = stride;
+    t.mrays_per_s = t.seconds > 0.0 ? static_cast<double>(count) / t.seconds * 1e-6 : 0.0;
+    return t;
+}
+
 }  // namespace
 
 SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
@@ -26,14 +40,7 @@ SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
         std::vector<double> seconds;
         for (int k = 0; k < options.repeats; ++k)
             seconds.push_back(*s.trace_set(set, stride, answers));
-        if (faulty(s))
-            for (std::size_t i = 0; i < answers.size(); i += 50) answers[i] = Result{};
-        SetTiming t;
-        t.seconds = median(seconds);
-        t.rays = count;
-        t.stride = stride;
-        t.mrays_per_s = t.seconds > 0.0 ? static_cast<double>(count) / t.seconds * 1e-6 : 0.0;
-        return t;
+        return timing(s, seconds, count, stride, answers);
     }
     const auto pass = [&] {
         parallel_for(count, options.threads, [&](std::size_t begin, std::size_t end) {
@@ -57,14 +64,7 @@ SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
         pass();
         seconds.push_back(watch.seconds());
     }
-    if (faulty(s))
-        for (std::size_t i = 0; i < answers.size(); i += 50) answers[i] = Result{};
-    SetTiming t;
-    t.seconds = median(seconds);
-    t.rays = count;
-    t.stride = stride;
-    t.mrays_per_s = t.seconds > 0.0 ? static_cast<double>(count) / t.seconds * 1e-6 : 0.0;
-    return t;
+    return timing(s, seconds, count, stride, answers);
 }
 
 Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::size_t stride,
