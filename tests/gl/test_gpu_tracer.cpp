@@ -90,7 +90,9 @@ TEST_P(GpuTrace, AgreesOnTheCornersOfTheTracer) {
     }
     // Every kind of shape, with and without transforms, at the origin and far from it
     // (the checker's shift of the scene's origin, the ray offsets at large coordinates).
-    const auto dir = test::temp_dir("gpu_far");
+    // A folder per backend: ctest runs the EGL and OSMesa instances side by side.
+    const auto dir = test::temp_dir(std::string("gpu_far_") +
+                                    (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
     for (double o : {0.0, 1e6}) {
         test::write_file(dir / ("tetra" + test::number(o) + ".obj"), test::tetra_obj(o));
         test::write_file(dir / "tetra0.obj", test::tetra_obj(0.0));
