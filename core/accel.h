@@ -92,6 +92,16 @@ class Accel {
         for (std::uint32_t s = 0; s < order_.size(); ++s) f(s, 1u);
     }
 
+    // The wide BVH's leaves renamed, f(first_slot, count) -> what traverse_leaves hands
+    // out in place of the first slot (WideBvh::relabel_leaves); false for the other
+    // structures, which keep handing out slots.
+    template <class F>
+    bool relabel_leaves(F&& f) {
+        auto* wide = std::get_if<DefaultWideBvh>(&impl_);
+        if (wide) wide->relabel_leaves(f);
+        return wide != nullptr;
+    }
+
   private:
     AccelKind kind_ = AccelKind::kBvh;
     std::variant<DefaultWideBvh, Bvh, UniformGrid, BruteForce> impl_;

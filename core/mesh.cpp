@@ -25,15 +25,22 @@ void TriangleMesh::build(AccelKind kind) {
         pack.set(lane, positions[idx[0]], positions[idx[1]], positions[idx[2]]);
     };
     packs_.clear();
+    pack_prims_.clear();
     leaf_pack_.assign(order.size(), 0);
     accel_.for_each_leaf([&](std::uint32_t first, std::uint32_t count) {
         leaf_pack_[first] = static_cast<std::uint32_t>(packs_.size());
         for (std::uint32_t i = 0; i < count; ++i) {
-            if (i % kTriangle4Lanes == 0)
+            if (i % kTriangle4Lanes == 0) {
                 packs_.emplace_back();  // zeroed: the spare lanes never hit
+                pack_prims_.resize(pack_prims_.size() + kTriangle4Lanes, ~0u);
+            }
             set(packs_.back(), static_cast<int>(i % kTriangle4Lanes), first + i);
+            pack_prims_[pack_prims_.size() - kTriangle4Lanes + i % kTriangle4Lanes] =
+                order[first + i];
         }
     });
+    leaves_are_packs_ = accel_.relabel_leaves(
+        [&](std::uint32_t first, std::uint32_t) { return leaf_pack_[first]; });
 }
 
 Aabb bounds_of(const TriangleMesh& mesh) {
@@ -48,7 +55,7 @@ Aabb bounds_of(const TriangleMesh& mesh) {
 
 std::size_t TriangleMesh::accel_memory_bytes() const {
     return accel_.memory_bytes() + packs_.size() * sizeof(Triangle4) +
-           leaf_pack_.size() * sizeof(std::uint32_t);
+           (pack_prims_.size() + leaf_pack_.size()) * sizeof(std::uint32_t);
 }
 
 std::size_t TriangleMesh::memory_bytes() const {
@@ -59,17 +66,17 @@ std::size_t TriangleMesh::memory_bytes() const {
 }
 
 bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
-    const auto order = accel_.order();
     const ShearedRay sheared(r);
     return accel_.traverse_leaves<false>(
-        r, hit.t, [&](std::uint32_t first, std::uint32_t count, float& t_max) {
+        r, hit.t, [&](std::uint32_t leaf, std::uint32_t count, float& t_max) {
             bool found = false;
-            const std::uint32_t start = leaf_pack_[first];
+            const std::uint32_t start = first_pack(leaf);
             for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
                 const Triangle4Hit h = rt::intersect(packs_[start + k], sheared, t_max);
                 if (h.lane < 0) continue;
                 t_max = h.t;
-                hit.prim = order[first + kTriangle4Lanes * k + static_cast<std::uint32_t>(h.lane)];
+                hit.prim = pack_prims_[kTriangle4Lanes * (start + k) +
+                                       static_cast<std::uint32_t>(h.lane)];
                 hit.b1 = h.b1;
                 hit.b2 = h.b2;
                 found = true;
@@ -81,8 +88,8 @@ bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
 bool TriangleMesh::occluded(const Ray& r, float t_max) const {
     const ShearedRay sheared(r);
     return accel_.traverse_leaves<true>(
-        r, t_max, [&](std::uint32_t first, std::uint32_t count, float& t_limit) {
-            const std::uint32_t start = leaf_pack_[first];
+        r, t_max, [&](std::uint32_t leaf, std::uint32_t count, float& t_limit) {
+            const std::uint32_t start = first_pack(leaf);
             for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k)
                 if (rt::intersect(packs_[start + k], sheared, t_limit).lane >= 0) return true;
             return false;

@@ -51,9 +51,16 @@ struct TriangleMesh {
     Accel accel_;
     // The triangles in the structure's slot order, four to a Triangle4, each leaf
     // starting a new one (leaf_pack_[first slot] is its first). The grid's and brute
-    // force's leaves are single triangles: slot s is lane 0 of packs_[s].
+    // force's leaves are single triangles: slot s is lane 0 of packs_[s]. The wide BVH
+    // hands out the first pack itself (leaves_are_packs_), no lookup on the way.
     std::vector<Triangle4> packs_;
+    std::vector<std::uint32_t> pack_prims_;  // the triangle in lane l of pack p: [4 p + l]
     std::vector<std::uint32_t> leaf_pack_;
+    bool leaves_are_packs_ = false;
+
+    std::uint32_t first_pack(std::uint32_t leaf) const {
+        return leaves_are_packs_ ? leaf : leaf_pack_[leaf];
+    }
 };
 
 // A mesh as one object of a scene sees it: the shape interface of core/shapes.h over a

@@ -53,7 +53,8 @@ struct Triangle4Hit {
     float t = kInfinity, b1 = 0.0f, b2 = 0.0f;  // b1, b2: weights of the second and third vertex
 };
 
-inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r, float t_max) {
+[[gnu::always_inline]] inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r,
+                                                     float t_max) {
     const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
     const Float4 az = rel(0, r.kz), bz = rel(1, r.kz), cz = rel(2, r.kz);
     const Float4 ax = rel(0, r.kx) - r.sx * az, ay = rel(0, r.ky) - r.sy * az;
