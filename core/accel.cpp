@@ -2,19 +2,20 @@
 
 namespace rt {
 
-void Accel::build(std::span<const Aabb> boxes, AccelKind kind, std::uint32_t leaf_size) {
+void Accel::build(std::span<const Aabb> boxes, AccelKind kind, std::uint32_t leaf_size,
+                  int threads) {
     kind_ = kind;
     order_.clear();
     switch (kind) {
         case AccelKind::kBvh: {
             DefaultWideBvh wide;
-            wide.build(boxes, leaf_size);
+            wide.build(boxes, leaf_size, threads);
             impl_ = std::move(wide);
             return;
         }
         case AccelKind::kBvh2: {
             Bvh bvh;
-            bvh.build(boxes, leaf_size);
+            bvh.build(boxes, leaf_size, threads);
             impl_ = std::move(bvh);
             return;
         }

@@ -51,8 +51,10 @@ class BruteForce {
 class Accel {
   public:
     // leaf_size: how many primitives the caller tests at once (4 for a mesh's
-    // Triangle4s), so the BVHs stop splitting there.
-    void build(std::span<const Aabb> boxes, AccelKind kind, std::uint32_t leaf_size = 1);
+    // Triangle4s), so the BVHs stop splitting there. The BVHs build on `threads` threads
+    // (0: all the hardware's).
+    void build(std::span<const Aabb> boxes, AccelKind kind, std::uint32_t leaf_size = 1,
+               int threads = 0);
     AccelKind kind() const { return kind_; }
     std::size_t memory_bytes() const;
     // Slot s of the traversal is primitive order()[s]: callers may keep their data in

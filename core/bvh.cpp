@@ -3,16 +3,16 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <future>
+#include <optional>
 #include <thread>
 
+#include "core/parallel.h"
 #include "core/simd.h"
 
 namespace rt {
 namespace {
 
 constexpr int kBins = 16;
-constexpr std::uint32_t kParallelMin = 20000;  // subtrees smaller than this are built in place
 
 // A box in SIMD lanes x, y, z (the fourth is spare), so growing it is two instructions.
 struct Box4 {
@@ -48,7 +48,8 @@ struct Bounds {
 
 struct Split {
     int axis = -1;
-    int bin = 0;  // bins [0, bin] go left
+    int bin = 0;                    // bins [0, bin] go left
+    std::uint32_t sorted_left = 0;  // if not 0: the range is sorted, its first this many go left
     float cost = kInfinity;
     Bounds left, right;
 };
@@ -64,44 +65,115 @@ struct Binner {
     }
 };
 
+// One pass's bins: the boxes and centre bounds of what fell in each, and how many.
+struct Bins {
+    std::array<Bounds, kBins> bounds{};
+    std::array<std::uint32_t, kBins> count{};
+
+    void add(const PrimRef& p, int b) {
+        bounds[b].box.grow(p.lo, p.hi);
+        const Float4 c = p.centre2();
+        bounds[b].centres.grow(c, c);
+        ++count[b];
+    }
+    void add(const Bins& other) {
+        for (int b = 0; b < kBins; ++b) {
+            bounds[b].box.grow(other.bounds[b].box);
+            bounds[b].centres.grow(other.bounds[b].centres);
+            count[b] += other.count[b];
+        }
+    }
+};
+
 // Builds the subtree of refs[begin, end) into its own node array; the refs array is
-// shared, and subtrees work on disjoint ranges of it, so they can run in parallel.
+// shared, and subtrees work on disjoint ranges of it, so they can run in parallel. A
+// build with a pool of threads bins and partitions its large nodes in parts, one a
+// thread, and hands right subtrees to the pool while it builds the left. The tree is the
+// same on any number of threads (see Bvh::build).
 struct Builder {
+    static constexpr std::uint32_t kMinPart = 8192;     // primitives a thread bins or moves
+    static constexpr std::uint32_t kMinSubtree = 4096;  // a subtree worth a thread of its own
+    static constexpr std::uint32_t kSorted = 16;        // nodes this small are split exactly
+
     std::vector<PrimRef>& refs;
+    std::vector<PrimRef>& scratch;  // as large as refs: where a partition moves things
     std::uint32_t max_leaf;
     std::vector<BvhNode> nodes;
-    int parallel_depth = 0;  // levels still allowed to hand a subtree to another thread
+    TaskPool* pool = nullptr;  // none: all on this thread
+
+    int parts(std::uint32_t begin, std::uint32_t end) const {
+        return pool ? part_count(end - begin, pool->threads(), kMinPart) : 1;
+    }
 
     // Binned SAH (Wald, "On fast construction of SAH-based BVHs", 2007) along the axis
     // where the centres spread most: one pass bins them, a sweep finds the cheapest split
     // and, from the bins, both sides' bounds, so no child needs a pass of its own.
-    Split find_split(std::uint32_t begin, std::uint32_t end, const Bounds& bounds,
-                     Binner& binner) const {
+    Split find_split(std::uint32_t begin, std::uint32_t end, const Bounds& bounds, Binner& binner) {
         const Float4 extent = bounds.centres.hi - bounds.centres.lo;
         const int axis = extent[0] >= extent[1] ? (extent[0] >= extent[2] ? 0 : 2)
                                                 : (extent[1] >= extent[2] ? 1 : 2);
         const float scale = static_cast<float>(kBins) / extent[axis];
         if (!(extent[axis] > 0.0f) || !std::isfinite(scale)) return {};
         binner = {axis, bounds.centres.lo[axis], scale};
-        std::array<Bounds, kBins> bins{};
-        std::array<std::uint32_t, kBins> count{};
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const PrimRef& p = refs[i];
-            const int b = binner(p);
-            bins[b].box.grow(p.lo, p.hi);
-            const Float4 c = p.centre2();
-            bins[b].centres.grow(c, c);
-            ++count[b];
+        if (end - begin <= kSorted) return sorted_split(begin, end, axis);
+        Bins bins;
+        const int n_parts = parts(begin, end);
+        if (n_parts == 1) {
+            for (std::uint32_t i = begin; i < end; ++i) bins.add(refs[i], binner(refs[i]));
+        } else {
+            std::vector<Bins> part_bins(static_cast<std::size_t>(n_parts));
+            parallel_parts(pool, begin, end, n_parts, [&](int part, std::size_t b, std::size_t e) {
+                for (std::size_t i = b; i < e; ++i) part_bins[part].add(refs[i], binner(refs[i]));
+            });
+            for (const Bins& p : part_bins) bins.add(p);
         }
-        // Sweep from the right for every right side, then from the left.
+        return best_split(bins, axis, end - begin);
+    }
+
+    // Along `axis` by centre, ties by index: an order that depends on the set alone.
+    static bool after(const PrimRef& a, const PrimRef& b, int axis) {
+        const float ca = a.centre2()[axis], cb = b.centre2()[axis];
+        return ca > cb || (ca == cb && a.index() > b.index());
+    }
+
+    // A small node: every split between its centres sorted along the axis, not 16 bins'
+    // worth (most nodes are small, and their bins cost more than their primitives).
+    Split sorted_split(std::uint32_t begin, std::uint32_t end, int axis) {
+        const auto first = refs.begin() + begin, last = refs.begin() + end;
+        for (auto i = first + 1; i < last; ++i)  // insertion sort: stable, and n is small
+            for (auto j = i; j > first && after(*(j - 1), *j, axis); --j) std::iter_swap(j - 1, j);
+        const std::uint32_t n = end - begin;
+        std::array<Bounds, kSorted> right{};  // right[k]: of [k, n)
+        Bounds acc;
+        for (std::uint32_t k = n; k-- > 1;) {
+            const PrimRef& p = refs[begin + k];
+            acc.box.grow(p.lo, p.hi);
+            acc.centres.grow(p.centre2(), p.centre2());
+            right[k] = acc;
+        }
+        Split best;
+        acc = Bounds{};
+        for (std::uint32_t k = 1; k < n; ++k) {
+            const PrimRef& p = refs[begin + k - 1];
+            acc.box.grow(p.lo, p.hi);
+            acc.centres.grow(p.centre2(), p.centre2());
+            const float cost = acc.box.half_area() * static_cast<float>(k) +
+                               right[k].box.half_area() * static_cast<float>(n - k);
+            if (cost < best.cost) best = {axis, 0, k, cost, acc, right[k]};
+        }
+        return best;
+    }
+
+    // Sweep from the right for every right side, then from the left.
+    static Split best_split(const Bins& bins, int axis, std::uint32_t total) {
         std::array<Bounds, kBins> right{};
         std::array<float, kBins> right_cost{};
         Bounds acc;
         std::uint32_t n = 0;
         for (int b = kBins - 1; b > 0; --b) {
-            acc.box.grow(bins[b].box);
-            acc.centres.grow(bins[b].centres);
-            n += count[b];
+            acc.box.grow(bins.bounds[b].box);
+            acc.centres.grow(bins.bounds[b].centres);
+            n += bins.count[b];
             right[b] = acc;
             right_cost[b] = acc.box.half_area() * static_cast<float>(n);
         }
@@ -109,14 +181,61 @@ struct Builder {
         acc = Bounds{};
         n = 0;
         for (int b = 0; b < kBins - 1; ++b) {
-            acc.box.grow(bins[b].box);
-            acc.centres.grow(bins[b].centres);
-            n += count[b];
+            acc.box.grow(bins.bounds[b].box);
+            acc.centres.grow(bins.bounds[b].centres);
+            n += bins.count[b];
             const float cost = acc.box.half_area() * static_cast<float>(n) + right_cost[b + 1];
-            if (n > 0 && n < end - begin && cost < best.cost)
-                best = {axis, b, cost, acc, right[b + 1]};
+            if (n > 0 && n < total && cost < best.cost)
+                best = {axis, b, 0, cost, acc, right[b + 1]};
         }
         return best;
+    }
+
+    // Moves the primitives of bins [0, split.bin] to the front of [begin, end), each side
+    // in its old order; returns where the right side starts.
+    std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const Binner& binner,
+                            const Split& split) {
+        if (split.sorted_left != 0) return begin + split.sorted_left;
+        const auto goes_left = [&](const PrimRef& p) { return binner(p) <= split.bin; };
+        // In parts from three threads on; on two, three passes in two halves cost more than one.
+        const int n_parts = parts(begin, end) > 2 ? parts(begin, end) : 1;
+        if (n_parts == 1) {  // lefts in place, rights by way of scratch: no branches to miss
+            std::uint32_t left = begin, right = begin;
+            for (std::uint32_t i = begin; i < end; ++i)
+                (goes_left(refs[i]) ? refs[left++] : scratch[right++]) = refs[i];
+            std::copy(scratch.begin() + begin, scratch.begin() + right, refs.begin() + left);
+            return left;
+        }
+        // Each part counts its left side; then each writes both sides into scratch at its
+        // own offsets; then all of it comes back.
+        const auto n = static_cast<std::size_t>(n_parts);
+        std::vector<std::uint32_t> lefts(n), sizes(n);
+        parallel_parts(pool, begin, end, n_parts, [&](int part, std::size_t b, std::size_t e) {
+            sizes[part] = static_cast<std::uint32_t>(e - b);
+            lefts[part] = static_cast<std::uint32_t>(
+                std::count_if(refs.begin() + static_cast<std::ptrdiff_t>(b),
+                              refs.begin() + static_cast<std::ptrdiff_t>(e), goes_left));
+        });
+        std::uint32_t mid = begin;
+        for (std::uint32_t l : lefts) mid += l;
+        std::vector<std::uint32_t> left_at(n), right_at(n);
+        for (std::size_t p = 0, l = begin, r = mid; p < n; ++p) {
+            left_at[p] = static_cast<std::uint32_t>(l);
+            right_at[p] = static_cast<std::uint32_t>(r);
+            l += lefts[p];
+            r += sizes[p] - lefts[p];
+        }
+        parallel_parts(pool, begin, end, n_parts, [&](int part, std::size_t b, std::size_t e) {
+            std::uint32_t left = left_at[part], right = right_at[part];
+            for (std::size_t i = b; i < e; ++i)
+                scratch[goes_left(refs[i]) ? left++ : right++] = refs[i];
+        });
+        parallel_parts(pool, begin, end, n_parts, [&](int, std::size_t b, std::size_t e) {
+            std::copy(scratch.begin() + static_cast<std::ptrdiff_t>(b),
+                      scratch.begin() + static_cast<std::ptrdiff_t>(e),
+                      refs.begin() + static_cast<std::ptrdiff_t>(b));
+        });
+        return mid;
     }
 
     void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, const Bounds& bounds,
@@ -133,37 +252,30 @@ struct Builder {
         Binner binner{};
         const Split split = find_split(begin, end, bounds, binner);
         if (split.axis < 0) return leaf();  // all centres in one point: nothing separates them
-        const auto middle =
-            std::partition(refs.begin() + begin, refs.begin() + end,
-                           [&](const PrimRef& p) { return binner(p) <= split.bin; });
-        const auto mid = static_cast<std::uint32_t>(middle - refs.begin());
+        const std::uint32_t mid = partition(begin, end, binner, split);
 
-        // The right subtree on another thread while this one builds the left.
-        std::future<std::vector<BvhNode>> right_nodes;
-        if (parallel_depth > 0 && end - mid >= kParallelMin) {
-            // Captured by value: this builder goes on changing parallel_depth meanwhile.
-            right_nodes = std::async(
-                std::launch::async,
-                [this, mid, end, depth, right = split.right, levels = parallel_depth - 1] {
-                    Builder sub{refs, max_leaf, {}, levels};
-                    sub.nodes.reserve(2 * (end - mid) / max_leaf);
-                    sub.nodes.emplace_back();
-                    sub.build(0, mid, end, right, depth + 1);
-                    return std::move(sub.nodes);
-                });
-        }
+        // The right subtree to the pool (into nodes of its own) while this thread builds the
+        // left; a small one here after it.
+        TaskPool::Group group;
+        std::vector<BvhNode> right_nodes;
+        const bool fork = pool && end - mid >= kMinSubtree && mid - begin >= kMinSubtree;
+        if (fork)
+            pool->run(group, [&, right = split.right] {
+                Builder sub{refs, scratch, max_leaf, {}, pool};
+                sub.nodes.reserve(2 * (end - mid) / max_leaf);
+                sub.nodes.emplace_back();
+                sub.build(0, mid, end, right, depth + 1);
+                right_nodes = std::move(sub.nodes);
+            });
         const auto left = static_cast<std::uint32_t>(nodes.size());
         nodes.emplace_back();
-        const int spent = right_nodes.valid() ? 1 : 0;  // a thread went to the right subtree
-        parallel_depth -= spent;
         build(left, begin, mid, split.left, depth + 1);
-        parallel_depth += spent;
         const auto right = static_cast<std::uint32_t>(nodes.size());
-        if (right_nodes.valid()) {
-            std::vector<BvhNode> sub = right_nodes.get();
-            for (BvhNode& n : sub)
+        if (fork) {
+            pool->wait(group);
+            for (BvhNode& n : right_nodes)
                 if (!n.is_leaf()) n.first += right;  // child links were relative to the subtree
-            nodes.insert(nodes.end(), sub.begin(), sub.end());
+            nodes.insert(nodes.end(), right_nodes.begin(), right_nodes.end());
         } else {
             nodes.emplace_back();
             build(right, mid, end, split.right, depth + 1);
@@ -173,37 +285,49 @@ struct Builder {
     }
 };
 
-int parallel_levels() {
-    int levels = 0;
-    for (unsigned threads = std::max(1u, std::thread::hardware_concurrency()); threads > 1;
-         threads /= 2)
-        ++levels;
-    return levels;
-}
-
 }  // namespace
 
-void Bvh::build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf) {
+void Bvh::build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf, int threads) {
     nodes_.clear();
     prims_.clear();
     if (prim_boxes.empty()) return;
-    std::vector<PrimRef> refs(prim_boxes.size());
+    threads = build_threads(threads);
+    const auto count = static_cast<std::uint32_t>(prim_boxes.size());
+    std::vector<PrimRef> refs(count), scratch(count);
+    // A pool only where there is more than one thread and enough to share.
+    std::optional<TaskPool> pool;
+    if (threads > 1 && count >= 2 * Builder::kMinSubtree) pool.emplace(threads);
+    TaskPool* workers = pool ? &*pool : nullptr;
+    const int n_parts = workers ? part_count(count, threads, Builder::kMinPart) : 1;
+    std::vector<Bounds> part_bounds(static_cast<std::size_t>(n_parts));
+    parallel_parts(workers, 0, count, n_parts, [&](int part, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const Aabb& b = prim_boxes[i];
+            const auto index = static_cast<std::uint32_t>(i);
+            refs[i] = {Float4{b.lo.x, b.lo.y, b.lo.z, std::bit_cast<float>(index)},
+                       Float4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
+            part_bounds[part].box.grow(refs[i].lo, refs[i].hi);
+            const Float4 c = refs[i].centre2();
+            part_bounds[part].centres.grow(c, c);
+        }
+    });
     Bounds bounds;
-    for (std::uint32_t i = 0; i < prim_boxes.size(); ++i) {
-        const Aabb& b = prim_boxes[i];
-        refs[i] = {Float4{b.lo.x, b.lo.y, b.lo.z, std::bit_cast<float>(i)},
-                   Float4{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
-        bounds.box.grow(refs[i].lo, refs[i].hi);
-        const Float4 c = refs[i].centre2();
-        bounds.centres.grow(c, c);
+    for (const Bounds& b : part_bounds) {
+        bounds.box.grow(b.box);
+        bounds.centres.grow(b.centres);
     }
-    Builder builder{refs, std::max(1u, max_leaf), {}, parallel_levels()};
+    Builder builder{refs, scratch, std::max(1u, max_leaf), {}, workers};
     builder.nodes.reserve(2 * prim_boxes.size() / builder.max_leaf + 1);
     builder.nodes.emplace_back();
-    builder.build(0, 0, static_cast<std::uint32_t>(refs.size()), bounds, 0);
+    builder.build(0, 0, count, bounds, 0);
     nodes_ = std::move(builder.nodes);
     prims_.resize(refs.size());
     for (std::size_t s = 0; s < refs.size(); ++s) prims_[s] = refs[s].index();
+    // Which primitives share a node depends on the set alone (bins and the small nodes'
+    // sort do not see the order); in a leaf, the order is by index. So the tree, slots
+    // included, is the same however the partitions ordered things, on any thread count.
+    for (const BvhNode& n : nodes_)
+        if (n.is_leaf()) std::sort(prims_.begin() + n.first, prims_.begin() + n.first + n.count);
 }
 
 }  // namespace rt

@@ -26,8 +26,9 @@ class Bvh {
   public:
     static constexpr int kMaxDepth = 60;  // the traversal stack is sized from this
 
-    // Subtrees of at most max_leaf primitives become leaves (see Accel::build).
-    void build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf = 2);
+    // Subtrees of at most max_leaf primitives become leaves (see Accel::build). On
+    // `threads` threads (0: all the hardware's); the tree is the same on any number.
+    void build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf = 2, int threads = 0);
 
     bool empty() const { return nodes_.empty(); }
     Aabb bounds() const { return empty() ? Aabb{} : Aabb{nodes_[0].lo, nodes_[0].hi}; }

@@ -7,38 +7,56 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/parallel.h"
 #include "core/shapes.h"
 
 namespace rt {
 
-void TriangleMesh::build(AccelKind kind) {
-    bounds_ = Aabb{};
+void TriangleMesh::build(AccelKind kind, int threads) {
     std::vector<Aabb> boxes(triangles.size());
+    bounds_ = Aabb{};
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         for (int k = 0; k < 3; ++k) boxes[i].grow(positions[triangles[i][k]]);
         bounds_.grow(boxes[i]);
     }
-    accel_.build(boxes, kind, kTriangle4Lanes);
+    accel_.build(boxes, kind, kTriangle4Lanes, threads);
+    // Each leaf's first pack (a pass over the leaves), then the packs filled in parallel.
     const auto order = accel_.order();
-    const auto set = [&](Triangle4& pack, int lane, std::uint32_t slot) {
-        const glm::uvec3 idx = triangles[order[slot]];
-        pack.set(lane, positions[idx[0]], positions[idx[1]], positions[idx[2]]);
+    struct Leaf {
+        std::uint32_t first, count;
     };
-    packs_.clear();
-    pack_prims_.clear();
+    std::vector<Leaf> leaves;
     leaf_pack_.assign(order.size(), 0);
+    std::uint32_t pack_total = 0;
     accel_.for_each_leaf([&](std::uint32_t first, std::uint32_t count) {
-        leaf_pack_[first] = static_cast<std::uint32_t>(packs_.size());
-        for (std::uint32_t i = 0; i < count; ++i) {
-            if (i % kTriangle4Lanes == 0) {
-                packs_.emplace_back();  // zeroed: the spare lanes never hit
-                pack_prims_.resize(pack_prims_.size() + kTriangle4Lanes, ~0u);
-            }
-            set(packs_.back(), static_cast<int>(i % kTriangle4Lanes), first + i);
-            pack_prims_[pack_prims_.size() - kTriangle4Lanes + i % kTriangle4Lanes] =
-                order[first + i];
-        }
+        leaves.push_back({first, count});
+        leaf_pack_[first] = pack_total;
+        pack_total += (count + kTriangle4Lanes - 1) / kTriangle4Lanes;
     });
+    packs_.assign(pack_total, Triangle4{});  // zeroed: the spare lanes never hit
+    pack_prims_.assign(std::size_t{pack_total} * kTriangle4Lanes, ~0u);
+    const auto fill = [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t l = begin; l < end; ++l) {
+            const Leaf leaf = leaves[l];
+            const std::uint32_t start = leaf_pack_[leaf.first];
+            for (std::uint32_t i = 0; i < leaf.count; ++i) {
+                const std::uint32_t prim = order[leaf.first + i];
+                const glm::uvec3 idx = triangles[prim];
+                packs_[start + i / kTriangle4Lanes].set(static_cast<int>(i % kTriangle4Lanes),
+                                                        positions[idx[0]], positions[idx[1]],
+                                                        positions[idx[2]]);
+                pack_prims_[std::size_t{start} * kTriangle4Lanes + i] = prim;
+            }
+        }
+    };
+    threads = build_threads(threads);
+    const int parts = part_count(leaves.size(), threads, 4096);
+    if (parts > 1) {
+        TaskPool pool(parts);
+        parallel_parts(&pool, 0, leaves.size(), parts, fill);
+    } else {
+        fill(0, 0, leaves.size());
+    }
     leaves_are_packs_ = accel_.relabel_leaves(
         [&](std::uint32_t first, std::uint32_t) { return leaf_pack_[first]; });
 }
@@ -75,8 +93,8 @@ bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
                 const Triangle4Hit h = rt::intersect(packs_[start + k], sheared, t_max);
                 if (h.lane < 0) continue;
                 t_max = h.t;
-                hit.prim = pack_prims_[kTriangle4Lanes * (start + k) +
-                                       static_cast<std::uint32_t>(h.lane)];
+                hit.prim =
+                    pack_prims_[kTriangle4Lanes * (start + k) + static_cast<std::uint32_t>(h.lane)];
                 hit.b1 = h.b1;
                 hit.b2 = h.b2;
                 found = true;

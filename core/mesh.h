@@ -30,7 +30,7 @@ struct TriangleMesh {
     std::vector<std::uint32_t> points;
 
     // Bounds and acceleration structure; call after filling the arrays.
-    void build(AccelKind kind = AccelKind::kBvh);
+    void build(AccelKind kind = AccelKind::kBvh, int threads = 0);  // 0: every hardware thread
     const Aabb& bounds() const { return bounds_; }
     std::size_t memory_bytes() const;
     std::size_t accel_memory_bytes() const;  // the structure and its packed triangles only

@@ -37,7 +37,8 @@ class WideBvh {
     static constexpr int kWidth = N;
     // Subtrees of at most leaf_size primitives become leaves: 4 for a mesh (one
     // Triangle4), 1 for a scene's objects, which are tested one by one.
-    void build(std::span<const Aabb> prim_boxes, std::uint32_t leaf_size);
+    // On `threads` threads (0: all the hardware's), the same tree on any number.
+    void build(std::span<const Aabb> prim_boxes, std::uint32_t leaf_size, int threads = 0);
 
     bool empty() const { return nodes_.empty(); }
     Aabb bounds() const { return bounds_; }

@@ -67,7 +67,8 @@ class Structure {
     }
 };
 
-std::unique_ptr<Structure> make_ours(rt::AccelKind kind);
+// Builds on `threads` threads, as Embree's device does with its own.
+std::unique_ptr<Structure> make_ours(rt::AccelKind kind, int threads);
 std::unique_ptr<Structure> make_embree(int threads);  // nullptr when built without Embree
 bool have_embree();
 // The GPU tracer's traversal (app/gl/gpu_tracer.h) on a headless context of `backend`:

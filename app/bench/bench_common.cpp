@@ -108,10 +108,10 @@ namespace {
 
 class Ours : public Structure {
   public:
-    explicit Ours(rt::AccelKind kind) : kind_(kind) {}
+    Ours(rt::AccelKind kind, int threads) : kind_(kind), threads_(threads) {}
     std::string name() const override { return rt::accel_name(kind_); }
     void prepare(const rt::TriangleMesh& mesh) override { mesh_ = mesh; }
-    void build() override { mesh_.build(kind_); }
+    void build() override { mesh_.build(kind_, threads_); }
     std::size_t memory_bytes() const override { return mesh_.accel_memory_bytes(); }
     Result intersect(const rt::Ray& ray, float t_max) const override {
         rt::Hit hit;
@@ -125,11 +125,14 @@ class Ours : public Structure {
 
   private:
     rt::AccelKind kind_;
+    int threads_;
     rt::TriangleMesh mesh_;
 };
 
 }  // namespace
 
-std::unique_ptr<Structure> make_ours(rt::AccelKind kind) { return std::make_unique<Ours>(kind); }
+std::unique_ptr<Structure> make_ours(rt::AccelKind kind, int threads) {
+    return std::make_unique<Ours>(kind, threads);
+}
 
 }  // namespace rt::bench

@@ -129,6 +129,108 @@ rt::LoadedScene load(const std::string& name) {
     return out;
 }
 
+// Every ray set through every entry, brute force on a subset of its rays.
+void trace_sets(std::vector<Entry>& entries, const std::vector<RaySet>& sets,
+                const rt::TriangleMesh& mesh, const MeasureOptions& measure) {
+    for (Entry& e : entries) {
+        e.answers.clear();
+        e.timing.clear();
+        for (const RaySet& set : sets) {
+            const double tests =
+                static_cast<double>(set.rays.size()) * static_cast<double>(mesh.triangles.size());
+            const std::size_t stride =
+                e.brute() ? std::max<std::size_t>(
+                                1, static_cast<std::size_t>(tests / measure.brute_budget))
+                          : 1;
+            e.answers.emplace_back();
+            e.timing.push_back(time_set(*e.structure, set, stride, measure, e.answers.back()));
+        }
+    }
+}
+
+// The ray sets, from our BVH's primary hits.
+std::vector<RaySet> ray_sets(const Structure& bvh, const rt::Camera& camera,
+                             const rt::TriangleMesh& mesh, const std::vector<rt::Light>& lights,
+                             const MeasureOptions& measure) {
+    std::vector<Result> primary_hits;
+    MeasureOptions once = measure;
+    once.repeats = 0;
+    time_set(bvh, primary_rays(camera), 1, once, primary_hits);
+    return make_ray_sets(camera, mesh, lights, primary_hits);
+}
+
+void write_json(const std::string& path, const nlohmann::json& report) {
+    if (path.empty()) return;
+    std::ofstream out(path);
+    out << report.dump(2) << '\n';
+    if (!out) throw rt::Error(path, "json", "cannot write the file");
+}
+
+// --threads-sweep: build and trace rates of our BVH and Embree per thread count.
+int run_threads_sweep(const SceneBenchOptions& o, const rt::LoadedScene& loaded,
+                      const rt::TriangleMesh& mesh, const rt::Camera& camera) {
+    std::printf(
+        "%s: %zu triangles, %dx%d camera, median of %d passes (builds: of %d) per "
+        "thread count; (N.NNx): time relative to Embree's\n",
+        o.scene.c_str(), mesh.triangles.size(), o.width, o.height, o.measure.repeats,
+        o.measure.build_repeats);
+    std::printf("%7s %22s %14s", "threads", "bvh build Mtri/s", "embree Mtri/s");
+    nlohmann::json report = {{"scene", o.scene}, {"triangles", mesh.triangles.size()}};
+    std::vector<RaySet> sets;
+    bool ok = true;
+    for (int threads : o.threads_sweep) {
+        MeasureOptions measure = o.measure;
+        measure.threads = threads;
+        std::vector<Entry> entries;
+        entries.emplace_back(make_ours(rt::AccelKind::kBvh, threads));
+        if (auto embree = make_embree(threads)) entries.emplace_back(std::move(embree));
+        for (Entry& e : entries)
+            e.build_seconds = time_build(*e.structure, mesh, measure.build_repeats);
+        if (sets.empty()) {
+            sets = ray_sets(*entries[0].structure, camera, mesh, loaded.scene.lights, measure);
+            for (const RaySet& set : sets)
+                std::printf(" %28s", (set.name + " Mrays/s bvh, embree").c_str());
+            std::printf("\n");
+        }
+        trace_sets(entries, sets, mesh, measure);
+        const Entry& bvh = entries[0];
+        const Entry* embree = entries.size() > 1 ? &entries[1] : nullptr;
+        const auto rate = [&](const Entry& e) {
+            return static_cast<double>(mesh.triangles.size()) / e.build_seconds * 1e-6;
+        };
+        nlohmann::json row = {{"threads", threads}, {"bvh_build_mtris_per_s", rate(bvh)}};
+        std::printf("%7d %13.2f", threads, rate(bvh));
+        if (embree) {
+            std::printf(" (%4.2fx) %14.2f", bvh.build_seconds / embree->build_seconds,
+                        rate(*embree));
+            row["embree_build_mtris_per_s"] = rate(*embree);
+        } else {
+            std::printf(" %22s", "-");
+        }
+        for (std::size_t s = 0; s < sets.size(); ++s) {
+            row[sets[s].name]["bvh"] = bvh.timing[s].mrays_per_s;
+            if (!embree) {
+                std::printf(" %19.2f, -", bvh.timing[s].mrays_per_s);
+                continue;
+            }
+            const double ratio = embree->timing[s].mrays_per_s / bvh.timing[s].mrays_per_s;
+            row[sets[s].name]["embree"] = embree->timing[s].mrays_per_s;
+            row[sets[s].name]["embree_time_ratio"] = ratio;
+            std::printf(" %11.2f (%4.2fx), %8.2f", bvh.timing[s].mrays_per_s, ratio,
+                        embree->timing[s].mrays_per_s);
+        }
+        std::printf("\n");
+        nlohmann::json checks;
+        ok = check(entries, sets, mesh, checks) && ok;
+        row["checks"] = checks["checks"];
+        report["rows"].push_back(row);
+    }
+    std::printf("answers: %s\n",
+                ok ? "every structure agrees with the references" : "WRONG ANSWERS (see above)");
+    write_json(o.json, report);
+    return ok ? 0 : 1;
+}
+
 }  // namespace
 
 int run_scene(const SceneBenchOptions& o) {
@@ -137,6 +239,7 @@ int run_scene(const SceneBenchOptions& o) {
     if (mesh.triangles.empty())
         throw rt::Error(o.scene, "triangles", "the scene has no triangles to benchmark");
     const rt::Camera camera = loaded.scene.camera.resized(o.width, o.height);
+    if (!o.threads_sweep.empty()) return run_threads_sweep(o, loaded, mesh, camera);
     std::printf(
         "%s: %zu triangles, %dx%d camera, %zu lights, %d threads, median of %d passes after a "
         "warm-up; bvh %d-wide, bvh2 binary%s\n",
@@ -147,7 +250,7 @@ int run_scene(const SceneBenchOptions& o) {
     std::vector<Entry> entries;
     for (rt::AccelKind k :
          {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2, rt::AccelKind::kBvh})
-        entries.emplace_back(make_ours(k));
+        entries.emplace_back(make_ours(k, o.measure.threads));
     if (auto embree = make_embree(o.measure.threads)) entries.emplace_back(std::move(embree));
     if (o.gpu) entries.emplace_back(make_gpu(o.gl));
     // The BVH makes the ray sets; a reference checks every answer, so both always run.
@@ -161,28 +264,11 @@ int run_scene(const SceneBenchOptions& o) {
     for (Entry& e : entries)
         e.build_seconds = time_build(*e.structure, mesh, e.brute() ? 1 : o.measure.build_repeats);
 
-    // The ray sets come from our BVH's primary hits; every structure then traces them.
-    std::vector<Result> primary_hits;
-    MeasureOptions once = o.measure;
-    once.repeats = 0;
-    const RaySet primary = primary_rays(camera);
     const auto bvh = std::find_if(entries.begin(), entries.end(),
                                   [](const Entry& e) { return e.structure->name() == "bvh"; });
-    time_set(*bvh->structure, primary, 1, once, primary_hits);
-    const std::vector<RaySet> sets = make_ray_sets(camera, mesh, loaded.scene.lights, primary_hits);
-
-    for (Entry& e : entries) {
-        for (const RaySet& set : sets) {
-            const double tests =
-                static_cast<double>(set.rays.size()) * static_cast<double>(mesh.triangles.size());
-            const std::size_t stride =
-                e.brute() ? std::max<std::size_t>(
-                                1, static_cast<std::size_t>(tests / o.measure.brute_budget))
-                          : 1;
-            e.answers.emplace_back();
-            e.timing.push_back(time_set(*e.structure, set, stride, o.measure, e.answers.back()));
-        }
-    }
+    const std::vector<RaySet> sets =
+        ray_sets(*bvh->structure, camera, mesh, loaded.scene.lights, o.measure);
+    trace_sets(entries, sets, mesh, o.measure);
     nlohmann::json report = {{"scene", o.scene},
                              {"triangles", mesh.triangles.size()},
                              {"threads", o.measure.threads},
@@ -198,11 +284,7 @@ int run_scene(const SceneBenchOptions& o) {
             time_gpu_frame(loaded.scene, camera, o.gpu_frame, o.measure.repeats, o.measure.threads);
     std::printf("answers: %s\n",
                 ok ? "every structure agrees with the references" : "WRONG ANSWERS (see above)");
-    if (!o.json.empty()) {
-        std::ofstream out(o.json);
-        out << report.dump(2) << '\n';
-        if (!out) throw rt::Error(o.json, "json", "cannot write the file");
-    }
+    write_json(o.json, report);
     return ok ? 0 : 1;
 }
 

@@ -1,5 +1,6 @@
 // rtbench: measures the acceleration structures and the item buffer.
 //   rtbench SCENE_OR_MESH [--json FILE] [--size WxH] [--threads N] [--repeats N] [--gpu]
+//   rtbench SCENE_OR_MESH --threads-sweep 1,2,4,... [--json FILE]
 //   rtbench --sweep [--csv FILE] [--png FILE] [--counts N,N,...]
 //   rtbench --item-buffer SCENE [--json FILE] [--size WxH] [--gl egl|osmesa]
 
@@ -56,6 +57,12 @@ int main(int argc, char** argv) {
                    "Structures to run: brute, grid, bvh2, bvh, embree (default: all); bvh and a "
                    "reference (embree, or brute without it) always run")
         ->delimiter(',');
+    std::vector<int> threads_sweep;
+    app.add_option("--threads-sweep", threads_sweep,
+                   "Build and trace rates of our BVH and Embree on each of these thread counts "
+                   "(e.g. 1,2,4,8)")
+        ->delimiter(',')
+        ->check(CLI::Range(1, 256));
     app.add_flag("--sweep", sweep, "Time per ray against triangle count on a tessellated sphere");
     app.add_option("--csv", csv, "--sweep: the data");
     app.add_option("--counts", counts,
@@ -104,7 +111,8 @@ int main(int argc, char** argv) {
         }
         if (item_buffer)
             return rt::bench::run_item_buffer({scene, json, w, h, threads, repeats, gl});
-        return rt::bench::run_scene({scene, only, json, w, h, measure, gpu, gpu_frame, gl});
+        return rt::bench::run_scene(
+            {scene, only, json, w, h, measure, gpu, gpu_frame, gl, threads_sweep});
     } catch (const rt::Error& e) {
         std::cerr << e.what() << '\n';
         return 1;

@@ -19,6 +19,9 @@ struct SceneBenchOptions {
     bool gpu = false;            // also the GPU tracer's traversal, on a `gl` context, and a frame
     rt::TraceOptions gpu_frame;  // of the whole scene traced so
     rt::gl::Backend gl = rt::gl::Backend::kAuto;
+    // Not empty: instead of the table, our wide BVH and Embree built and traced on each of
+    // these thread counts (the same rays), a row each.
+    std::vector<int> threads_sweep;
 };
 
 // Every structure on the scene's triangles; exit status 1 on a wrong answer.

@@ -74,7 +74,7 @@ int run_sweep(const SweepOptions& o) {
         std::vector<std::unique_ptr<Structure>> structures;
         for (rt::AccelKind k : {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2,
                                 rt::AccelKind::kBvh})
-            structures.push_back(make_ours(k));
+            structures.push_back(make_ours(k, o.measure.threads));
         if (auto embree = make_embree(o.measure.threads)) structures.push_back(std::move(embree));
         for (auto& s : structures) {
             s->prepare(sphere);

@@ -159,6 +159,36 @@ TEST(Bvh, DegenerateInputsBuild) {
     EXPECT_EQ(visited, 1000);
 }
 
+// The build runs on a pool of threads; the tree must not depend on how many. Boxes on a
+// lattice give many equal centres (the ties the small nodes' sort must break the same
+// way), and enough of them that the root is binned and partitioned in parts.
+TEST(Bvh, TheTreeIsTheSameOnAnyNumberOfThreads) {
+    std::mt19937 rng(23);
+    std::uniform_int_distribution<int> cell(0, 40);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 60000; ++i) {
+        const vec3 lo(static_cast<float>(cell(rng)), static_cast<float>(cell(rng)),
+                      static_cast<float>(cell(rng)));
+        boxes.push_back({lo, lo + vec3(1.0f + static_cast<float>(i % 3))});
+    }
+    const auto same = [](const Bvh& a, const Bvh& b) {
+        if (a.node_count() != b.node_count()) return false;
+        for (std::size_t n = 0; n < a.node_count(); ++n) {
+            const BvhNode &x = a.nodes()[n], &y = b.nodes()[n];
+            if (x.lo != y.lo || x.hi != y.hi || x.first != y.first || x.count != y.count)
+                return false;
+        }
+        return std::equal(a.order().begin(), a.order().end(), b.order().begin(), b.order().end());
+    };
+    Bvh one;
+    one.build(boxes, 4, 1);
+    for (int threads : {2, 3, 4, 7}) {
+        Bvh many;
+        many.build(boxes, 4, threads);
+        EXPECT_TRUE(same(one, many)) << threads << " threads";
+    }
+}
+
 // Both widths of the wide BVH, whichever the build uses by default: every box a ray
 // enters is visited, and closest-hit culling keeps the nearest, on boxes of every
 // shape, flat ones included.
