@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <optional>
 #include <thread>
 
 #include "core/parallel.h"
@@ -92,7 +91,7 @@ struct Bins {
 // same on any number of threads (see Bvh::build).
 struct Builder {
     static constexpr std::uint32_t kMinPart = 8192;     // primitives a thread bins or moves
-    static constexpr std::uint32_t kMinSubtree = 4096;  // a subtree worth a thread of its own
+    static constexpr std::uint32_t kMinSubtree = 1024;  // a subtree worth a thread of its own
     static constexpr std::uint32_t kSorted = 16;        // nodes this small are split exactly
 
     std::vector<PrimRef>& refs;
@@ -295,9 +294,8 @@ void Bvh::build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf, int th
     const auto count = static_cast<std::uint32_t>(prim_boxes.size());
     std::vector<PrimRef> refs(count), scratch(count);
     // A pool only where there is more than one thread and enough to share.
-    std::optional<TaskPool> pool;
-    if (threads > 1 && count >= 2 * Builder::kMinSubtree) pool.emplace(threads);
-    TaskPool* workers = pool ? &*pool : nullptr;
+    TaskPool* workers =
+        threads > 1 && count >= 2 * Builder::kMinSubtree ? &TaskPool::shared(threads) : nullptr;
     const int n_parts = workers ? part_count(count, threads, Builder::kMinPart) : 1;
     std::vector<Bounds> part_bounds(static_cast<std::size_t>(n_parts));
     parallel_parts(workers, 0, count, n_parts, [&](int part, std::size_t begin, std::size_t end) {

@@ -52,8 +52,7 @@ void TriangleMesh::build(AccelKind kind, int threads) {
     threads = build_threads(threads);
     const int parts = part_count(leaves.size(), threads, 4096);
     if (parts > 1) {
-        TaskPool pool(parts);
-        parallel_parts(&pool, 0, leaves.size(), parts, fill);
+        parallel_parts(&TaskPool::shared(threads), 0, leaves.size(), parts, fill);
     } else {
         fill(0, 0, leaves.size());
     }

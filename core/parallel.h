@@ -1,5 +1,5 @@
 #pragma once
-// Fork-join for the builds: a pool of worker threads started once per build, tasks in
+// Fork-join for the builds: a pool of worker threads, tasks in
 // groups, and a wait that runs queued tasks (anyone's) until its group is done, so that
 // a task may fork and wait in turn without tying a thread up. Workers take the oldest
 // task (the largest, in a top-down build); a waiting thread the newest (its own).
@@ -10,6 +10,8 @@
 #include <cstddef>
 #include <deque>
 #include <functional>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -45,6 +47,17 @@ class TaskPool {
     TaskPool& operator=(const TaskPool&) = delete;
 
     int threads() const { return threads_; }
+
+    // A pool of `threads` kept for the life of the process (its workers sleep between
+    // uses), so that a build pays no thread starts: one per thread count asked for.
+    static TaskPool& shared(int threads) {
+        static std::mutex mutex;
+        static std::map<int, std::unique_ptr<TaskPool>> pools;
+        std::lock_guard lock(mutex);
+        auto& pool = pools[threads];
+        if (!pool) pool = std::make_unique<TaskPool>(threads);
+        return *pool;
+    }
 
     void run(Group& group, std::function<void()> task) {
         group.pending.fetch_add(1);
