@@ -10,6 +10,10 @@
 #include "core/parallel.h"
 #include "core/shapes.h"
 
+// For the leaf tests handed to a traversal: GCC otherwise leaves them as calls (bunny,
+// 2 threads: shadow rays 1.24x -> 0.97x Embree's time, secondary 1.45x -> 1.17x).
+#define RT_FORCE_INLINE __attribute__((always_inline))
+
 namespace rt {
 
 void TriangleMesh::build(AccelKind kind, int threads) {
@@ -46,9 +50,11 @@ void TriangleMesh::build(AccelKind kind, int threads) {
                                                         positions[idx[0]], positions[idx[1]],
                                                         positions[idx[2]]);
                 pack_prims_[std::size_t{start} * kTriangle4Lanes + i] = prim;
+                prim_lane_[prim] = start * kTriangle4Lanes + i;
             }
         }
     };
+    prim_lane_.assign(triangles.size(), 0);
     threads = build_threads(threads);
     const int parts = part_count(leaves.size(), threads, 4096);
     if (parts > 1) {
@@ -72,7 +78,7 @@ Aabb bounds_of(const TriangleMesh& mesh) {
 
 std::size_t TriangleMesh::accel_memory_bytes() const {
     return accel_.memory_bytes() + packs_.size() * sizeof(Triangle4) +
-           (pack_prims_.size() + leaf_pack_.size()) * sizeof(std::uint32_t);
+           (pack_prims_.size() + prim_lane_.size() + leaf_pack_.size()) * sizeof(std::uint32_t);
 }
 
 std::size_t TriangleMesh::memory_bytes() const {
@@ -85,7 +91,7 @@ std::size_t TriangleMesh::memory_bytes() const {
 bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
     const ShearedRay sheared(r);
     return accel_.traverse_leaves<false>(
-        r, hit.t, [&](std::uint32_t leaf, std::uint32_t count, float& t_max) {
+        r, hit.t, [&](std::uint32_t leaf, std::uint32_t count, float& t_max) RT_FORCE_INLINE {
             bool found = false;
             const std::uint32_t start = first_pack(leaf);
             for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
@@ -102,10 +108,23 @@ bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
         });
 }
 
+bool TriangleMesh::intersect_triangle(std::uint32_t prim, const Ray& r, Hit& hit) const {
+    if (prim >= prim_lane_.size()) return false;
+    const std::uint32_t at = prim_lane_[prim];
+    const Triangle4Hit h = rt::intersect(packs_[at / kTriangle4Lanes], ShearedRay(r), hit.t,
+                                         1u << (at % kTriangle4Lanes));
+    if (h.lane < 0) return false;
+    hit.t = h.t;
+    hit.prim = prim;
+    hit.b1 = h.b1;
+    hit.b2 = h.b2;
+    return true;
+}
+
 bool TriangleMesh::occluded(const Ray& r, float t_max) const {
     const ShearedRay sheared(r);
     return accel_.traverse_leaves<true>(
-        r, t_max, [&](std::uint32_t leaf, std::uint32_t count, float& t_limit) {
+        r, t_max, [&](std::uint32_t leaf, std::uint32_t count, float& t_limit) RT_FORCE_INLINE {
             const std::uint32_t start = first_pack(leaf);
             for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k)
                 if (rt::intersect(packs_[start + k], sheared, t_limit).lane >= 0) return true;

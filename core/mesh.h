@@ -38,6 +38,9 @@ struct TriangleMesh {
     // Closest hit in (0, hit.t): fills t, prim, b1, b2 and returns true.
     bool intersect(const Ray& r, Hit& hit) const;
     bool occluded(const Ray& r, float t_max) const;
+    // Triangle `prim` alone, with the very test (and pack) a traversal uses, so the hit is
+    // the one a traversal would find there: what the item buffer names.
+    bool intersect_triangle(std::uint32_t prim, const Ray& r, Hit& hit) const;
 
     // The hit's shading normal (interpolated, or the face normal) and face normal, unnormalised.
     vec3 face_normal(std::uint32_t tri) const;
@@ -55,6 +58,7 @@ struct TriangleMesh {
     // hands out the first pack itself (leaves_are_packs_), no lookup on the way.
     std::vector<Triangle4> packs_;
     std::vector<std::uint32_t> pack_prims_;  // the triangle in lane l of pack p: [4 p + l]
+    std::vector<std::uint32_t> prim_lane_;   // its inverse: triangle -> 4 p + l
     std::vector<std::uint32_t> leaf_pack_;
     bool leaves_are_packs_ = false;
 

@@ -75,16 +75,10 @@ bool Scene::intersect_primitive(std::uint32_t object, std::uint32_t prim, const 
     const Object& o = objects[object];
     const auto* m = std::get_if<MeshRef>(&o.shape);
     if (!m) return intersect_object(object, r, hit);
-    const TriangleMesh& mesh = meshes[m->mesh];
-    if (prim >= mesh.triangles.size()) return false;
-    // The same watertight test (and t bound) that traversal uses, one lane of it: the
-    // item buffer's pixels then get the very hit a full traversal would give.
-    const glm::uvec3 idx = mesh.triangles[prim];
-    Triangle4 pack{};
-    pack.set(0, mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]);
-    const Triangle4Hit h = rt::intersect(pack, ShearedRay(object_ray(o, r)), hit.t);
-    if (h.lane != 0) return false;
-    hit = Hit{h.t, object, prim, h.b1, h.b2};
+    // The same watertight test (and t bound) that traversal uses, on the triangle's own
+    // pack: the item buffer's pixels then get the very hit a full traversal would give.
+    if (!meshes[m->mesh].intersect_triangle(prim, object_ray(o, r), hit)) return false;
+    hit.object = object;
     return true;
 }
 

@@ -53,8 +53,10 @@ struct Triangle4Hit {
     float t = kInfinity, b1 = 0.0f, b2 = 0.0f;  // b1, b2: weights of the second and third vertex
 };
 
+// `lanes`: the lanes that may hit (a bit each); the others are computed and ignored, so a
+// lane's answer is the same whichever others are asked for.
 [[gnu::always_inline]] inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r,
-                                                     float t_max) {
+                                                     float t_max, unsigned lanes = 0xfu) {
     const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
     const Float4 az = rel(0, r.kz), bz = rel(1, r.kz), cz = rel(2, r.kz);
     const Float4 ax = rel(0, r.kx) - r.sx * az, ay = rel(0, r.ky) - r.sy * az;
@@ -70,7 +72,7 @@ struct Triangle4Hit {
     if (bits(inside) == 0) return best;  // most leaf tests end here, before any division
     const Float4 t_scaled = r.sz * (u * az + v * bz + w * cz);  // t * det
     const Float4 t = t_scaled / det;
-    unsigned candidates = bits(inside & (t > 0.0f) & (t < t_max));
+    unsigned candidates = bits(inside & (t > 0.0f) & (t < t_max)) & lanes;
     if (candidates == 0) return best;
     // Not only t > 0 but t beyond its own rounding error (Pharr, Jakob and Humphreys,
     // PBR 3rd ed., 3.9.6): the error grows with the triangle's size, so a ray leaving a

@@ -68,11 +68,13 @@ check "X swaps the sides" at_most 100 "$work/swapped.png" "$work/traced.png" 590
 
 # Holding Tab flickers between raster and traced.
 after "^flicker: on" xdotool keydown Tab
+# Grabs until both have been seen (up to 30: a loaded machine draws fewer frames).
 seen_raster=0 seen_traced=0
-for i in 1 2 3 4 5 6 7 8; do
+for i in $(seq 30); do
     grab flicker
     at_most 100 "$work/flicker.png" "$work/raster.png" >/dev/null && seen_raster=1
     at_most 100 "$work/flicker.png" "$work/traced.png" >/dev/null && seen_traced=1
+    [ $seen_raster$seen_traced = 11 ] && break
     sleep 0.13
 done
 after "^flicker: off" xdotool keyup Tab
