@@ -75,6 +75,12 @@ uniform vec3 u_plane_t2;
 uniform vec3 u_pattern_shift;  // Scene::pattern_shift: the scene's origin, folded
 
 layout(location = 0) out vec4 o_colour;  // linear; encoded to sRGB where it is written out
+// The item buffer from the same draw (as itembuffer.frag), where the target has room for
+// it (Framebuffer::Kind::kColourAndIds); elsewhere these two go nowhere.
+uniform uint u_object_id;  // object index + 1
+uniform uint u_prim_base;  // the draw's first triangle within the object's mesh
+layout(location = 1) out uint o_object;
+layout(location = 2) out uint o_prim;
 
 struct Surface {
     vec3 world;
@@ -164,6 +170,8 @@ float shadow_visibility(int light, vec3 world, vec3 n, vec3 to_light) {
 }
 
 void main() {
+    o_object = u_object_id;
+    o_prim = u_prim_base + uint(gl_PrimitiveID);
     Surface s = surface();
     vec3 to_viewer = normalize(u_eye - s.world);
     // Normals face the viewer; an interpolated normal leaning past the silhouette gives

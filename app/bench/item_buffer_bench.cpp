@@ -22,15 +22,18 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
     rt::RenderOptions options;
     options.threads = o.threads;
 
-    std::vector<double> plain_frame, plain_primary, ib_pass, ib_primary, ib_frame;
+    std::vector<double> plain_frame, plain_primary, ib_pass, ib_primary, ib_frame, trace_with,
+        raster_plain, raster_shared, ids_read;
     rt::ItemBuffer ib = raster.render_item_buffer(scene.camera);  // warm-up: buffers, sphere meshes
+    const bool can_share = raster.shares_item_buffer();
+    if (can_share) (void)raster.render_with_item_buffer(scene.camera);
     rt::Image with, without;
     rt::RenderStats stats;
     for (int k = 0; k < o.repeats + 1; ++k) {  // the first round is a warm-up
         without = rt::render(scene, options, &stats);
         if (k > 0)
             plain_frame.push_back(stats.seconds), plain_primary.push_back(stats.primary_seconds);
-        const rt::Stopwatch watch;
+        rt::Stopwatch watch;
         ib = raster.render_item_buffer(scene.camera);
         const double pass = watch.seconds();
         with = rt::render(scene, options, &stats, {}, {}, &ib);
@@ -38,6 +41,23 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
             ib_pass.push_back(pass);
             ib_primary.push_back(stats.primary_seconds);
             ib_frame.push_back(pass + stats.seconds);
+        }
+        if (!can_share) continue;
+        // From the raster pass: what drawing and reading the ids adds to a raster frame
+        // (drawn anyway, to be compared with the traced one).
+        watch.restart();
+        (void)raster.render(scene.camera);
+        const double plain_raster = watch.lap();
+        const rt::gl::RasterRenderer::Frame frame = raster.render_with_item_buffer(scene.camera);
+        const double with_ids = watch.seconds();
+        if (frame.ids.object != ib.object || frame.ids.prim != ib.prim)
+            throw rt::Error(o.scene, "item buffer",
+                            "the raster pass's item buffer differs from the dedicated pass's");
+        if (k > 0) {
+            raster_plain.push_back(plain_raster);
+            raster_shared.push_back(with_ids);
+            ids_read.push_back(frame.ids_read_seconds);
+            trace_with.push_back(stats.seconds);
         }
     }
     const std::uint64_t differing = rt::item_buffer_disagreements(with, without);
@@ -48,31 +68,50 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
                 o.height, o.threads, context->description().c_str(), o.repeats);
     std::printf("without item buffer: frame %.1f ms, primary rays %.1f ms\n", 1e3 * frame0,
                 1e3 * primary0);
+    const auto net = [&](double frame) {
+        std::printf("net on the frame: %.2fx (%s %.1f ms)\n", frame0 / frame,
+                    frame < frame0 ? "saves" : "COSTS", 1e3 * std::abs(frame0 - frame));
+    };
     std::printf(
-        "with item buffer:    frame %.1f ms = raster pass and read-back %.1f ms + trace %.1f ms "
-        "(primary %.1f ms)\n",
+        "with item buffer, its own pass:        frame %.1f ms = pass and read-back %.1f ms + "
+        "trace %.1f ms (primary %.1f ms); ",
         1e3 * frame1, 1e3 * pass, 1e3 * (frame1 - pass), 1e3 * primary1);
-    std::printf(
-        "primary rays: %.2fx faster; net on the frame: %.2fx (%s %.1f ms); %llu fell back, %llu of "
-        "%zu pixels differ\n",
-        primary0 / primary1, frame0 / frame1, frame1 < frame0 ? "saves" : "COSTS",
-        1e3 * std::abs(frame0 - frame1),
-        static_cast<unsigned long long>(stats.item_buffer_fallbacks),
-        static_cast<unsigned long long>(differing), with.pixels.size());
+    net(frame1);
+    double frame2 = 0.0, shared = 0.0;
+    if (can_share) {
+        // What the ids add to the raster frame: the difference of the medians, and never
+        // less than their read-back, timed alone (the difference is noisy).
+        shared = std::max(median(ids_read), median(raster_shared) - median(raster_plain));
+        frame2 = shared + median(trace_with);
+        std::printf(
+            "with item buffer, from the raster pass: frame %.1f ms = ids drawn and read back %.1f "
+            "ms + trace %.1f ms; ",
+            1e3 * frame2, 1e3 * shared, 1e3 * (frame2 - shared));
+        net(frame2);
+    }
+    std::printf("primary rays: %.2fx faster; %llu fell back, %llu of %zu pixels differ\n",
+                primary0 / primary1, static_cast<unsigned long long>(stats.item_buffer_fallbacks),
+                static_cast<unsigned long long>(differing), with.pixels.size());
     if (!o.json.empty()) {
-        const nlohmann::json j = {{"scene", o.scene},
-                                  {"width", o.width},
-                                  {"height", o.height},
-                                  {"threads", o.threads},
-                                  {"gl", context->description()},
-                                  {"frame_seconds_without", frame0},
-                                  {"frame_seconds_with", frame1},
-                                  {"primary_seconds_without", primary0},
-                                  {"primary_seconds_with", primary1},
-                                  {"raster_pass_seconds", pass},
-                                  {"net_speedup", frame0 / frame1},
-                                  {"fallback_pixels", stats.item_buffer_fallbacks},
-                                  {"differing_pixels", differing}};
+        nlohmann::json j = {{"scene", o.scene},
+                            {"width", o.width},
+                            {"height", o.height},
+                            {"threads", o.threads},
+                            {"gl", context->description()},
+                            {"frame_seconds_without", frame0},
+                            {"frame_seconds_with", frame1},
+                            {"primary_seconds_without", primary0},
+                            {"primary_seconds_with", primary1},
+                            {"primary_speedup", primary0 / primary1},
+                            {"raster_pass_seconds", pass},
+                            {"net_speedup", frame0 / frame1},
+                            {"fallback_pixels", stats.item_buffer_fallbacks},
+                            {"differing_pixels", differing}};
+        if (can_share) {
+            j["shared_pass_seconds"] = shared;
+            j["frame_seconds_with_shared"] = frame2;
+            j["net_speedup_shared"] = frame0 / frame2;
+        }
         std::ofstream(o.json) << j.dump(2) << '\n';
     }
     return static_cast<double>(differing) <= 0.001 * static_cast<double>(with.pixels.size()) ? 0

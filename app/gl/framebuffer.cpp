@@ -25,11 +25,12 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples)
       samples_(kind == Kind::kColour ? std::max(1, samples) : 1),
       fbo_(make_framebuffer()) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-    const int attachments = kind == Kind::kItemBuffer ? 2 : 1;
+    const int attachments =
+        kind == Kind::kColourAndIds ? 3 : (kind == Kind::kItemBuffer ? 2 : 1);
     for (int i = 0; i < attachments; ++i) {
         colour_[i] = make_texture();
         glBindTexture(GL_TEXTURE_2D, colour_[i].get());
-        if (kind == Kind::kColour)
+        if (kind == Kind::kColour || (kind == Kind::kColourAndIds && i == 0))
             glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT,
                          nullptr);
         else if (kind == Kind::kDistance)
@@ -46,7 +47,7 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples)
     glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
-    const GLenum draw[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    const GLenum draw[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
     glDrawBuffers(attachments, draw);
     require_complete("framebuffer");
     if (samples_ > 1) {
@@ -92,10 +93,10 @@ void Framebuffer::bind() const {
         const GLfloat far[4] = {3.0e38f, 0.0f, 0.0f, 0.0f};
         glClearBufferfv(GL_COLOR, 0, far);
     }
-    if (kind_ == Kind::kItemBuffer) {
+    if (kind_ == Kind::kItemBuffer || kind_ == Kind::kColourAndIds) {
         const GLuint zero[4] = {0, 0, 0, 0};
-        glClearBufferuiv(GL_COLOR, 0, zero);
-        glClearBufferuiv(GL_COLOR, 1, zero);
+        glClearBufferuiv(GL_COLOR, id_attachment(), zero);
+        glClearBufferuiv(GL_COLOR, id_attachment() + 1, zero);
     }
 }
 
@@ -122,22 +123,52 @@ vec3 Framebuffer::read_pixel(int x, int y) const {
 std::uint32_t Framebuffer::read_id(int x, int y) const {
     std::uint32_t id = 0;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(id_attachment()));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(x, y, 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &id);
     check("read_id");
     return id;
 }
 
-ItemBuffer Framebuffer::read_item_buffer() const {
-    ItemBuffer ib(width_, height_);
+ItemBuffer Framebuffer::read_item_buffer() const { return start_item_buffer_read().finish(); }
+
+Framebuffer::ItemBufferRead::ItemBufferRead(int width, int height)
+    : width_(width), height_(height), pbo_(make_buffer()) {}
+
+// Both attachments into one buffer, objects then triangles: glReadPixels into a bound
+// pixel-pack buffer returns at once on a GPU, the copy going on while the CPU works.
+Framebuffer::ItemBufferRead Framebuffer::start_item_buffer_read() const {
+    ItemBufferRead read(width_, height_);
+    const auto bytes = static_cast<GLsizeiptr>(width_) * height_ * 4;
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, read.pbo_.get());
+    glBufferData(GL_PIXEL_PACK_BUFFER, 2 * bytes, nullptr, GL_STREAM_READ);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, ib.object.data());
-    glReadBuffer(GL_COLOR_ATTACHMENT1);
-    glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, ib.prim.data());
-    check("read_item_buffer");
+    for (int k = 0; k < 2; ++k) {
+        glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(id_attachment() + k));
+        glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                     reinterpret_cast<void*>(static_cast<std::uintptr_t>(k * bytes)));
+    }
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    check("start_item_buffer_read");
+    return read;
+}
+
+ItemBuffer Framebuffer::ItemBufferRead::finish() {
+    ItemBuffer ib(width_, height_);
+    const std::size_t count = ib.object.size();
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, pbo_.get());
+    const void* data = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0,
+                                        static_cast<GLsizeiptr>(2 * count * 4), GL_MAP_READ_BIT);
+    if (data) {
+        const auto* words = static_cast<const std::uint32_t*>(data);
+        std::copy(words, words + count, ib.object.begin());
+        std::copy(words + count, words + 2 * count, ib.prim.begin());
+        glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
+    }
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    check("ItemBufferRead::finish");
+    if (!data) throw std::runtime_error("item buffer: the pixel buffer could not be mapped");
     return ib;
 }
 

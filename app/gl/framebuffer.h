@@ -14,7 +14,9 @@ class Framebuffer {
     enum class Kind {
         kColour,      // one RGBA32F attachment: linear colour, read back unencoded
         kItemBuffer,  // two R32UI attachments: object id + 1, triangle index
-        kDistance     // one R32F attachment: a distance (shadow maps), cleared to "far"
+        kDistance,    // one R32F attachment: a distance (shadow maps), cleared to "far"
+        kColourAndIds  // both of the first two in one draw (one sample only): the raster
+                       // image and its item buffer from the same pass
     };
 
     // `samples` > 1 (colour only): drawn multisampled, into renderbuffers; resolve()
@@ -31,15 +33,30 @@ class Framebuffer {
 
     Image read_colour() const;
     ItemBuffer read_item_buffer() const;
+    // The item buffer's read-back started into a pixel buffer object and finished later,
+    // so that the CPU can do other work while a GPU copies (kItemBuffer, kColourAndIds).
+    class ItemBufferRead {
+      public:
+        ItemBuffer finish();  // waits for the copy, then maps the buffer
+
+      private:
+        friend class Framebuffer;
+        ItemBufferRead(int width, int height);
+        int width_, height_;
+        BufferHandle pbo_;
+    };
+    ItemBufferRead start_item_buffer_read() const;
     // One pixel (x, y from the bottom left): a colour, or an item buffer's object id + 1.
     vec3 read_pixel(int x, int y) const;
     std::uint32_t read_id(int x, int y) const;
 
   private:
+    int id_attachment() const { return kind_ == Kind::kColourAndIds ? 1 : 0; }
+
     Kind kind_;
     int width_, height_, samples_;
     FramebufferHandle fbo_;
-    TextureHandle colour_[2];
+    TextureHandle colour_[3];
     RenderbufferHandle depth_;
     FramebufferHandle ms_fbo_;  // samples > 1: what is drawn into
     RenderbufferHandle ms_colour_, ms_depth_;

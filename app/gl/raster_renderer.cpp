@@ -9,6 +9,7 @@
 #include <glm/matrix.hpp>
 
 #include "app/gl/debug.h"
+#include "core/stopwatch.h"
 
 namespace rt::gl {
 
@@ -106,21 +107,13 @@ void RasterRenderer::draw_scene(const Camera& camera, int skip, const CubeAtlas*
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);  // surfaces are two-sided, as in the tracer
-    std::vector<DrawItem> items = gpu_.draw_list(camera);
-    // Nearest first, so that the depth test rejects hidden fragments before they are shaded
-    // (many_spheres' environment maps, looking across 1601 balls: 145 s unsorted, 2 s sorted).
-    const auto distance = [&](const DrawItem& item) {
-        return glm::length(glm::vec3((item.model * item.shape)[3]) - camera.eye);
-    };
-    std::vector<std::pair<float, std::size_t>> order;
-    for (std::size_t i = 0; i < items.size(); ++i)
-        order.emplace_back(items[i].plane ? INFINITY : distance(items[i]), i);
-    std::sort(order.begin(), order.end());
-    for (const auto& [d, i] : order) {
-        const DrawItem& item = items[i];
+    const std::vector<DrawItem> items = nearest_first(camera);
+    for (const DrawItem& item : items) {
         if (item.wire || static_cast<int>(item.object_id) - 1 == skip) continue;
         set_object(*phong_, item, camera);
         set_material(scene_.materials[item.material], item);
+        phong_->set("u_object_id", item.object_id);
+        phong_->set("u_prim_base", item.prim_base);
         const std::size_t object = item.object_id - 1;
         phong_->set("u_env_row", env && object < env_row_.size() ? env_row_[object] : -1);
         item.mesh->draw(item.first_vertex, item.vertex_count);
@@ -129,8 +122,28 @@ void RasterRenderer::draw_scene(const Camera& camera, int skip, const CubeAtlas*
     check("RasterRenderer::draw");
 }
 
+// Nearest first, so that the depth test rejects hidden fragments before they are shaded
+// (many_spheres' environment maps, looking across 1601 balls: 145 s unsorted, 2 s sorted).
+// The item-buffer pass draws in the same order, so that where two surfaces tie in depth
+// it names the one the colour pass shows.
+std::vector<DrawItem> RasterRenderer::nearest_first(const Camera& camera) {
+    std::vector<DrawItem> items = gpu_.draw_list(camera);
+    const auto distance = [&](const DrawItem& item) {
+        return item.plane ? INFINITY
+                          : glm::length(glm::vec3((item.model * item.shape)[3]) - camera.eye);
+    };
+    std::vector<std::pair<float, std::size_t>> order;
+    for (std::size_t i = 0; i < items.size(); ++i) order.emplace_back(distance(items[i]), i);
+    std::sort(order.begin(), order.end());
+    std::vector<DrawItem> sorted;
+    sorted.reserve(items.size());
+    for (const auto& [d, i] : order) sorted.push_back(items[i]);
+    return sorted;
+}
+
 // A mesh's lines and points, in its material's diffuse colour, unlit: they have no
-// normal to light. The tracer does not see them (it renders surfaces).
+// normal to light. The tracer does not see them (it renders surfaces), so where the
+// target holds an item buffer too they leave it alone.
 void RasterRenderer::draw_wires(const std::vector<DrawItem>& items, const Camera& camera) {
     bool any = false;
     for (const DrawItem& item : items) {
@@ -138,11 +151,19 @@ void RasterRenderer::draw_wires(const std::vector<DrawItem>& items, const Camera
         if (!any) {
             set_camera(wire_, camera);
             glPointSize(3.0f);
+            if (drawing_ids_) {
+                const GLenum colour_only[] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE};
+                glDrawBuffers(3, colour_only);
+            }
             any = true;
         }
         set_object(wire_, item, camera);
         wire_.set("u_colour", scene_.materials[item.material].kd);
         item.mesh->draw(item.first_vertex, item.vertex_count);
+    }
+    if (any && drawing_ids_) {
+        const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+        glDrawBuffers(3, all);
     }
 }
 
@@ -151,7 +172,7 @@ void RasterRenderer::draw_ids(const Camera& camera) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
-    for (const DrawItem& item : gpu_.draw_list(camera)) {
+    for (const DrawItem& item : nearest_first(camera)) {
         if (item.wire) continue;  // the tracer's first hits are surfaces
         set_object(ids_, item, camera);
         ids_.set("u_object_id", item.object_id);
@@ -169,15 +190,40 @@ Framebuffer& RasterRenderer::target(std::optional<Framebuffer>& fb, Framebuffer:
     return *fb;
 }
 
-const Framebuffer& RasterRenderer::render_to_texture(const Camera& camera) {
-    Framebuffer& fb = target(colour_target_, Framebuffer::Kind::kColour, camera, msaa_);
+const Framebuffer& RasterRenderer::render_to_texture(const Camera& camera, bool with_ids) {
+    drawing_ids_ = with_ids && shares_item_buffer();
+    Framebuffer& fb = drawing_ids_
+                          ? target(shared_target_, Framebuffer::Kind::kColourAndIds, camera)
+                          : target(colour_target_, Framebuffer::Kind::kColour, camera, msaa_);
     fb.bind();
     const glm::vec3 bg = scene_.background;
-    glClearColor(bg.x, bg.y, bg.z, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    const GLfloat clear[4] = {bg.x, bg.y, bg.z, 1.0f};
+    glClearBufferfv(GL_COLOR, 0, clear);  // not glClear: it would write floats into the ids
     draw(camera);
+    drawing_ids_ = false;
     fb.resolve();
     return fb;
+}
+
+RasterRenderer::Frame RasterRenderer::render_with_item_buffer(const Camera& camera) {
+    Frame frame;
+    if (shares_item_buffer()) {
+        const Framebuffer& fb = render_to_texture(camera, true);
+        Stopwatch watch;
+        Framebuffer::ItemBufferRead ids = fb.start_item_buffer_read();
+        double read = watch.lap();
+        frame.image = fb.read_colour();  // meanwhile, on a GPU
+        watch.restart();
+        frame.ids = ids.finish();
+        frame.ids_read_seconds = read + watch.seconds();
+        frame.shared = true;
+        return frame;
+    }
+    frame.image = render(camera);
+    const Stopwatch watch;
+    frame.ids = render_item_buffer(camera);
+    frame.ids_read_seconds = watch.seconds();
+    return frame;
 }
 
 const Framebuffer& RasterRenderer::render_item_buffer_to_texture(const Camera& camera) {

@@ -32,8 +32,22 @@ class RasterRenderer {
     ItemBuffer render_item_buffer(const Camera& camera);
 
     // The same passes, left on the GPU: their off-screen targets, for a viewer to sample.
-    const Framebuffer& render_to_texture(const Camera& camera);
+    // With `with_ids` (and shares_item_buffer()) the colour pass draws the item buffer
+    // too, into attachments 1 and 2 of the same target (Kind::kColourAndIds).
+    const Framebuffer& render_to_texture(const Camera& camera, bool with_ids = false);
     const Framebuffer& render_item_buffer_to_texture(const Camera& camera);
+
+    // The colour pass and its item buffer: from one draw where it can (one sample a
+    // pixel: an id cannot be averaged, so with MSAA the ids take a pass of their own).
+    // The same ids as render_item_buffer() either way (GL test).
+    bool shares_item_buffer() const { return msaa_ == 1; }
+    struct Frame {
+        Image image;
+        ItemBuffer ids;
+        bool shared = false;         // from the colour pass itself
+        double ids_read_seconds = 0;  // reading the ids back (shared) or their whole pass
+    };
+    Frame render_with_item_buffer(const Camera& camera);
 
     // Multisample anti-aliasing of the colour pass (1, 2, 4 or 8 samples; 1: none). The
     // item buffer stays one sample a pixel: an object id cannot be averaged.
@@ -72,6 +86,7 @@ class RasterRenderer {
 
   private:
     void set_camera(Program& program, const Camera& camera);
+    std::vector<DrawItem> nearest_first(const Camera& camera);
     void draw_wires(const std::vector<DrawItem>& items, const Camera& camera);
     void set_material(const Material& m, const DrawItem& item);
     void draw_scene(const Camera& camera, int skip, const CubeAtlas* env);
@@ -93,6 +108,8 @@ class RasterRenderer {
     Program shadow_;
     std::optional<Framebuffer> colour_target_;
     std::optional<Framebuffer> id_target_;
+    std::optional<Framebuffer> shared_target_;  // colour and ids from one draw
+    bool drawing_ids_ = false;                  // the bound target is shared_target_
     int msaa_ = 1;
     bool shadow_maps_ = false;
     int shadow_size_ = 1024;

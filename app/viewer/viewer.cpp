@@ -215,11 +215,18 @@ void Viewer::update_trace() {
     request.options.trace = trace_options();
     request.levels = std::move(levels);
     if (settings_.item_buffer && request.levels.back() == 1) {
+        // From the raster pass on screen where it drew the ids for this very camera (one
+        // sample a pixel): then only their read-back costs. Else a pass of their own.
         const rt::Stopwatch watch;
-        request.item_buffer =
-            std::make_shared<rt::ItemBuffer>(raster_->render_item_buffer(request.camera));
+        stats_.item_buffer_shared = raster_ids_ && raster_camera_ == request.camera;
+        if (stats_.item_buffer_shared) {
+            request.item_buffer = std::make_shared<rt::ItemBuffer>(raster_fb_->read_item_buffer());
+        } else {
+            request.item_buffer =
+                std::make_shared<rt::ItemBuffer>(raster_->render_item_buffer(request.camera));
+            ids_camera_.reset();  // the pass drew over the item-buffer view's texture
+        }
         stats_.item_buffer_ms = watch.milliseconds();
-        ids_camera_.reset();  // the pass drew over the item-buffer view's texture
     }
     if (key.explain) raster_frames(request);
     for (int spp = 4; !key.explain && request.levels.back() == 1 && spp <= settings_.max_spp;
@@ -302,11 +309,14 @@ View Viewer::shown_view() const {
 bool Viewer::traced_stale() const { return shown_.stale(trace_key()); }
 
 GLuint Viewer::raster_texture(const rt::Camera& camera) {
+    const bool ids = settings_.item_buffer && settings_.msaa == 1;  // see RasterRenderer
     if (raster_camera_ != camera || raster_msaa_ != settings_.msaa ||
-        raster_shadows_ != settings_.shadow_maps || raster_env_ != settings_.environment_maps) {
+        raster_shadows_ != settings_.shadow_maps || raster_env_ != settings_.environment_maps ||
+        raster_ids_ != ids) {
         apply_raster_settings();
         const rt::Stopwatch watch;
-        raster_fb_ = &raster_->render_to_texture(camera);
+        raster_fb_ = &raster_->render_to_texture(camera, ids);
+        raster_ids_ = ids && raster_->shares_item_buffer();
         raster_texture_ = raster_fb_->texture();
         glFinish();  // so that the time is the GPU's too
         stats_.raster_ms = watch.milliseconds();

@@ -70,7 +70,8 @@ struct FrameStats {
     int raster_width = 0, raster_height = 0;
     rt::RenderStats shown;            // the traced image on screen: its level's trace
     std::optional<TraceResult> full;  // the last full-resolution trace (image moved out)
-    double item_buffer_ms = 0.0;      // raster item-buffer pass with read-back
+    double item_buffer_ms = 0.0;      // the item buffer: its pass with read-back, or the read-back
+    bool item_buffer_shared = false;  // of the ids the raster pass drew with its colours
     FrameHistory frame_ms;            // the UI thread's frames
     FrameHistory trace_ms;            // each traced level, as it arrived
     double gpu_ms = 0.0;              // the last GPU trace, dispatch to texture
@@ -236,6 +237,7 @@ class Viewer {
     int raster_msaa_ = 1;                                   // and with how many samples
     bool raster_shadows_ = false;                           // and shadow maps or not
     bool raster_env_ = false;                               // and environment maps or not
+    bool raster_ids_ = false;                               // and the item buffer with it
     void apply_raster_settings();
     int max_msaa_ = 1;  // what the context offers
     GLuint raster_texture_ = 0, ids_texture_ = 0;

@@ -56,8 +56,9 @@ void Viewer::draw_statistics() {
     const auto& plain = stats_.full->without_item_buffer;
     if (!plain) return;
     const double saved = 1e3 * (plain->primary_seconds - s.primary_seconds) - stats_.item_buffer_ms;
-    ImGui::Text("item buffer: pass %.1f ms, primary %.1f -> %.1f ms", stats_.item_buffer_ms,
-                1e3 * plain->primary_seconds, 1e3 * s.primary_seconds);
+    ImGui::Text("item buffer: %s %.1f ms, primary %.1f -> %.1f ms",
+                stats_.item_buffer_shared ? "read back from the raster pass" : "its own pass",
+                stats_.item_buffer_ms, 1e3 * plain->primary_seconds, 1e3 * s.primary_seconds);
     ImGui::TextColored(saved >= 0 ? ImVec4(0.5f, 1.0f, 0.5f, 1.0f) : ImVec4(1.0f, 0.6f, 0.4f, 1.0f),
                        "net %s %.1f ms", saved >= 0 ? "saving" : "loss", std::abs(saved));
     const double pixels = static_cast<double>(s.rays.primary);

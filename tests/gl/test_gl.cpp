@@ -642,6 +642,42 @@ TEST_P(Gl, FailedConstructionsLeakNoGlNames) {
 
 // An OBJ of lines and points: the raster view draws them (in the material's diffuse
 // colour), the item buffer and the tracer see nothing there.
+// The item buffer drawn by the colour pass itself (the shared pass) is the dedicated
+// pass's, id for id, and drawing it changes no colour; with MSAA the ids take a pass of
+// their own and are the same again. The last scene has lines in front of its surface:
+// they are drawn in colour and leave the ids alone.
+TEST_P(Gl, TheColourPassDrawsTheSameItemBuffer) {
+    const auto wires =
+        test::write_file(test::temp_dir(std::string("shared_ids_") +
+                                        (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa")) /
+                             "face_and_lines.obj",
+                         "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0.5 0.2\nv 1 0.5 0.2\n"
+                         "v 0 0.5 -0.2\nv 1 0.5 -0.2\nf 1 2 4\nf 1 4 3\nl 5 6\nl 7 8\n");
+    std::vector<SceneDescription> scenes;
+    for (const char* name : kScenes) scenes.push_back(load(name, 200, 150));
+    LoadedScene loaded = load_scene(wires);
+    loaded.scene.camera = loaded.scene.camera.resized(96, 72);
+    scenes.push_back(std::move(loaded.scene));
+    for (SceneDescription& description : scenes) {
+        const Scene scene(std::move(description));
+        gl::RasterRenderer raster(scene);
+        const Image plain = raster.render(scene.camera);
+        const ItemBuffer dedicated = raster.render_item_buffer(scene.camera);
+        const gl::RasterRenderer::Frame frame = raster.render_with_item_buffer(scene.camera);
+        EXPECT_TRUE(frame.shared);
+        EXPECT_TRUE(frame.ids.object == dedicated.object) << scene.objects.size() << " objects";
+        EXPECT_TRUE(frame.ids.prim == dedicated.prim) << scene.objects.size() << " objects";
+        EXPECT_TRUE(frame.image.pixels == plain.pixels) << scene.objects.size() << " objects";
+        std::size_t named = 0;
+        for (std::uint32_t id : frame.ids.object) named += id != ItemBuffer::kEmpty;
+        EXPECT_GT(named, frame.ids.object.size() / 20);  // not an empty buffer, equal by chance
+        raster.set_msaa(4);
+        const gl::RasterRenderer::Frame multisampled = raster.render_with_item_buffer(scene.camera);
+        EXPECT_FALSE(multisampled.shared);
+        EXPECT_TRUE(multisampled.ids.object == dedicated.object);
+    }
+}
+
 TEST_P(Gl, LinesAndPointsAreDrawnByTheRasterOnly) {
     const auto path =
         test::write_file(test::temp_dir(std::string("wire_") +
