@@ -79,8 +79,7 @@ MeshFile load_ply_stl(const std::filesystem::path& path, const MeshFileOptions& 
             lo = glm::min(lo, g.positions[t[k]]);
             hi = glm::max(hi, g.positions[t[k]]);
         }
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    data.origin = mesh_origin(options, centre);
+    data.origin = mesh_origin(options, lo, hi);
     for (const glm::dvec3& p : g.positions) data.mesh.positions.push_back(vec3(p - data.origin));
     data.mesh.triangles = std::move(g.triangles);
     data.mesh.materials.assign(data.mesh.triangles.size(), kNoFileMaterial);

@@ -438,7 +438,7 @@ void GltfReader::finish() {
         hi = glm::max(hi, p);
     }
     const glm::dvec3 centre = positions_.empty() ? glm::dvec3(0.0) : 0.5 * (lo + hi);
-    g.origin = mesh_origin(options_, centre);
+    g.origin = mesh_origin(options_, lo, hi);
     for (const glm::dvec3& p : positions_) g.mesh.positions.push_back(vec3(p - g.origin));
     if (std::find(has_normals_.begin(), has_normals_.end(), true) != has_normals_.end()) {
         for (std::size_t t = 0; t < g.mesh.triangles.size(); ++t) {

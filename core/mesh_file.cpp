@@ -11,10 +11,15 @@
 
 namespace rt {
 
-glm::dvec3 mesh_origin(const MeshFileOptions& options, const glm::dvec3& centre) {
+glm::dvec3 mesh_origin(const MeshFileOptions& options, const glm::dvec3& lo, const glm::dvec3& hi) {
     if (options.origin) return *options.origin;
+    if (!(lo.x <= hi.x)) return glm::dvec3(0.0);  // nothing used
+    const glm::dvec3 centre = 0.5 * (lo + hi);
     const double far = std::max({std::fabs(centre.x), std::fabs(centre.y), std::fabs(centre.z)});
-    return far > options.recentre_beyond ? centre : glm::dvec3(0.0);
+    const glm::dvec3 side = hi - lo;
+    const double size = std::max({side.x, side.y, side.z});
+    const bool small_for_its_place = size > 0.0 && far > options.recentre_beyond_sizes * size;
+    return far > options.recentre_beyond || small_for_its_place ? centre : glm::dvec3(0.0);
 }
 
 MeshFile load_mesh_file(const std::filesystem::path& path, const MeshFileOptions& options) {

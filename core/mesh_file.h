@@ -23,6 +23,10 @@ struct MeshFileOptions {
     // any coordinate), store positions relative to it (MeshFile::origin), taken off in
     // double precision: a model far from the origin keeps its shape in float.
     double recentre_beyond = std::numeric_limits<double>::infinity();
+    // Or where it lies further out than this many times the box's largest side: a small
+    // model at a moderate distance (1 mm at 1,000 units) is as short of float precision
+    // there as a large one far out.
+    double recentre_beyond_sizes = std::numeric_limits<double>::infinity();
     // Or store positions relative to this point (a scene's origin, core/scene_loader.h).
     std::optional<glm::dvec3> origin;
 };
@@ -37,9 +41,10 @@ struct MeshFile {
 
 inline constexpr std::uint32_t kNoFileMaterial = 0xffffffffu;
 
-// Where a mesh with the box centre `centre` (file coordinates) puts its zero: the origin
-// asked for, else the centre if it lies beyond recentre_beyond, else the file's zero.
-glm::dvec3 mesh_origin(const MeshFileOptions& options, const glm::dvec3& centre);
+// Where a mesh whose used positions span [lo, hi] (file coordinates; lo > hi: none) puts
+// its zero: the origin asked for, else the box's centre if it lies beyond recentre_beyond
+// or beyond recentre_beyond_sizes times the box's largest side, else the file's zero.
+glm::dvec3 mesh_origin(const MeshFileOptions& options, const glm::dvec3& lo, const glm::dvec3& hi);
 
 // By the file's extension: .obj (core/obj_loader.h), .gltf or .glb (core/gltf_loader.h),
 // .ply or .stl (core/assimp_loader.h).

@@ -42,8 +42,9 @@ void add_warnings(const std::string& file, const std::string& text, std::vector<
 }
 
 // The centre of the box around the vertices that faces, lines and points use, in double.
-glm::dvec3 used_centre(const tinyobj::attrib_t& attrib,
-                       const std::vector<tinyobj::shape_t>& shapes) {
+// The box of the positions the faces, lines and points use (lo > hi: none).
+std::pair<glm::dvec3, glm::dvec3> used_bounds(const tinyobj::attrib_t& attrib,
+                                              const std::vector<tinyobj::shape_t>& shapes) {
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
     const auto vertex_count = static_cast<int>(attrib.vertices.size() / 3);
     for (const tinyobj::shape_t& shape : shapes)
@@ -55,7 +56,7 @@ glm::dvec3 used_centre(const tinyobj::attrib_t& attrib,
                 lo = glm::min(lo, glm::dvec3(v[0], v[1], v[2]));
                 hi = glm::max(hi, glm::dvec3(v[0], v[1], v[2]));
             }
-    return lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+    return {lo, hi};
 }
 
 // Positions relative to `origin`, the difference taken in double precision.
@@ -298,8 +299,8 @@ MeshFile load_obj(const std::filesystem::path& path, const MeshFileOptions& opti
         }
         data.materials.back().texture = it->second;
     }
-    const glm::dvec3 centre = used_centre(attrib, shapes);
-    data.origin = mesh_origin(options, centre);
+    const auto [lo, hi] = used_bounds(attrib, shapes);
+    data.origin = mesh_origin(options, lo, hi);
     copy_positions(file, attrib, data.origin, data.mesh);
     const bool has_normals = copy_triangles(file, attrib, shapes, data.mesh);
     if (const std::size_t dropped = drop_duplicate_triangles(data.mesh))

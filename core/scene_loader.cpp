@@ -29,10 +29,17 @@ void append_textures(MeshFile& mesh, SceneDescription& scene) {
 // a point of its own: its eye (JSON) or its centre (a bare mesh). Nearer, float's
 // precision is ample and the scene is read as it is, bit for bit.
 constexpr double kFarFromOrigin = 4096.0;
+// Or beyond this many times its own size (a bare mesh's box, the distance a JSON camera
+// looks across): there the ray offsets (256 float steps, 3e-5 of the distance) would be a
+// visible share of the scene (a 1 mm model 1,000 units out lost its shadows and
+// reflections), and float's step a larger one.
+constexpr double kFarForItsSize = 256.0;
 
-bool far_from_origin(const glm::dvec3& p) {
-    return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kFarFromOrigin;
+double farthest(const glm::dvec3& p) {
+    return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
 }
+
+bool far_from_origin(const glm::dvec3& p) { return farthest(p) > kFarFromOrigin; }
 
 // Walks one JSON scene into a SceneDescription, keeping the names and caches that loading needs.
 class JsonSceneReader {
@@ -46,8 +53,13 @@ class JsonSceneReader {
             {"camera", "resolution", "background", "ambient", "lights", "materials", "objects"});
         // A scene far from the origin is read relative to its eye, in double precision,
         // so that float's precision follows the eye (what the rays and the raster see).
-        const glm::dvec3 eye = root["camera"]["eye"].dvector3();
-        if (far_from_origin(eye)) origin_ = eye;
+        const JsonValue camera = root["camera"];
+        const glm::dvec3 eye = camera["eye"].dvector3();
+        double size = 0.0;  // how far the camera looks: the scene's scale, where it says
+        if (const auto look_at = camera.find("look_at"))
+            size = glm::length(look_at->dvector3() - eye);
+        if (far_from_origin(eye) || (size > 0.0 && farthest(eye) > kFarForItsSize * size))
+            origin_ = eye;
         out_.origin = origin_;
         scene_.origin = origin_;
         read_materials(root.find("materials"));
@@ -410,6 +422,7 @@ LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions&
     const glm::mat3 rotate = up_rotation(path, options.up);
     MeshFileOptions obj_options;
     obj_options.recentre_beyond = kFarFromOrigin;
+    obj_options.recentre_beyond_sizes = kFarForItsSize;
     MeshFile obj = load_mesh_file(path, obj_options);  // .obj, .ply or .stl
     for (vec3& p : obj.mesh.positions) p = rotate * p;
     for (vec3& n : obj.mesh.corner_normals) n = rotate * n;
@@ -441,6 +454,7 @@ static LoadedScene bare_mesh_scene(const std::filesystem::path& path, MeshFile m
 LoadedScene load_gltf_scene(const std::filesystem::path& path, const LoadOptions& options) {
     MeshFileOptions mesh_options;
     mesh_options.recentre_beyond = kFarFromOrigin;
+    mesh_options.recentre_beyond_sizes = kFarForItsSize;
     GltfScene gltf = load_gltf(path, mesh_options);
     std::vector<GltfCamera> cameras = std::move(gltf.cameras);
     std::vector<Light> lights = std::move(gltf.lights);

@@ -25,8 +25,7 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples)
       samples_(kind == Kind::kColour ? std::max(1, samples) : 1),
       fbo_(make_framebuffer()) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-    const int attachments =
-        kind == Kind::kColourAndIds ? 3 : (kind == Kind::kItemBuffer ? 2 : 1);
+    const int attachments = kind == Kind::kColourAndIds ? 3 : (kind == Kind::kItemBuffer ? 2 : 1);
     for (int i = 0; i < attachments; ++i) {
         colour_[i] = make_texture();
         glBindTexture(GL_TEXTURE_2D, colour_[i].get());

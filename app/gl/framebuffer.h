@@ -12,9 +12,9 @@ namespace rt::gl {
 class Framebuffer {
   public:
     enum class Kind {
-        kColour,      // one RGBA32F attachment: linear colour, read back unencoded
-        kItemBuffer,  // two R32UI attachments: object id + 1, triangle index
-        kDistance,    // one R32F attachment: a distance (shadow maps), cleared to "far"
+        kColour,       // one RGBA32F attachment: linear colour, read back unencoded
+        kItemBuffer,   // two R32UI attachments: object id + 1, triangle index
+        kDistance,     // one R32F attachment: a distance (shadow maps), cleared to "far"
         kColourAndIds  // both of the first two in one draw (one sample only): the raster
                        // image and its item buffer from the same pass
     };

@@ -44,7 +44,7 @@ class RasterRenderer {
     struct Frame {
         Image image;
         ItemBuffer ids;
-        bool shared = false;         // from the colour pass itself
+        bool shared = false;          // from the colour pass itself
         double ids_read_seconds = 0;  // reading the ids back (shared) or their whole pass
     };
     Frame render_with_item_buffer(const Camera& camera);

@@ -148,9 +148,10 @@ rt::ItemBuffer Job::item_buffer() {
     const double shared = std::max(0.0, watch.seconds() - plain);
     stats_["item_buffer_shared_seconds"] = shared;
     if (!o_.quiet)
-        std::printf("item buffer: its own pass %.4f s; from the raster pass %.4f s (the ids "
-                    "drawn with the colours, and read back)\n",
-                    dedicated, shared);
+        std::printf(
+            "item buffer: its own pass %.4f s; from the raster pass %.4f s (the ids "
+            "drawn with the colours, and read back)\n",
+            dedicated, shared);
     if (shared >= dedicated) return ib;
     stats_["item_buffer_pass"] = "shared";
     stats_["item_buffer_seconds"] = shared;

@@ -101,6 +101,17 @@ TEST_P(GpuTrace, AgreesOnTheCornersOfTheTracer) {
         const Agreement a = agreement(path, 160, 120, TraceOptions{});
         EXPECT_TRUE(a.ok()) << "far scene at offset " << o << ": " << a;
     }
+    // The same scene a thousand times smaller (balls of 1.5 mm), at the origin and a
+    // thousand units out: the offsets and the feelers' ends at small sizes.
+    for (double o : {0.0, 1e3}) {
+        const auto tiny = dir / ("tiny" + test::number(o));
+        std::filesystem::create_directories(tiny);
+        test::write_file(tiny / ("tetra" + test::number(o) + ".obj"), test::tetra_obj(o, 1e-3));
+        test::write_file(tiny / "tetra0.obj", test::tetra_obj(0.0, 1e-3));
+        const auto path = test::write_file(tiny / "tiny.json", test::far_json(o, 1e-3));
+        const Agreement a = agreement(path, 160, 120, TraceOptions{});
+        EXPECT_TRUE(a.ok()) << "tiny scene at offset " << o << ": " << a;
+    }
 }
 
 TEST_P(GpuTrace, AgreesWithEachEffectOff) {
