@@ -212,6 +212,20 @@ mutant ray-segments-miss-length core/ray_tree.cpp \
             s.miss = true;' \
     rt_tests $(unit 'RayTree.*')
 
+# Issue 15 and what the tiny-scene check found.
+mutant item-buffer-lanes-unmasked core/mesh.cpp \
+    '1u << (at % kTriangle4Lanes));' '0xfu);' \
+    rt_tests $(unit 'Triangle.*')
+mutant shared-ids-written-by-lines app/gl/raster_renderer.cpp \
+    'if (drawing_ids_) {' 'if (false) {' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*TheColourPassDrawsTheSameItemBuffer*'
+mutant small-scene-far-out-not-rebased core/scene_loader.cpp \
+    'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
+    rt_tests $(unit 'Far.*')
+mutant gpu-checker-shift-rounded shaders/gputrace.comp \
+    'precise vec3 r = (x - product) - error;' 'precise vec3 r = x - product;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*GpuTrace.AgreesOnTheCorners*'
+
 # The POV-Ray oracle (tests/oracle) alone, without the unit tests: an independent tracer
 # must notice a planted bug in refraction, shadows, the camera and transforms.
 oracle=(ctest -R '^oracle[.]' --output-on-failure)

@@ -204,5 +204,27 @@ TEST(Triangle, ItemBufferTestAgreesWithTraversalBitForBit) {
     EXPECT_GT(compared, 5000);
 }
 
+// The named triangle is tested in its own pack of four, the others masked off: where the
+// item buffer names one that lies behind a neighbour of the same pack (the raster and the
+// tracer may disagree at a pixel), the hit is the named triangle's, never the neighbour's
+// t with the named triangle's index.
+TEST(Triangle, ANamedTriangleIsHitItselfNotItsPackNeighbour) {
+    SceneDescription d;
+    TriangleMesh mesh;
+    mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}, {-1, -1, 1}, {1, -1, 1}, {0, 1, 1}};
+    mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
+    d.meshes.push_back(std::move(mesh));
+    d.objects.push_back(Object{"two", MeshRef{0, true}, 0, std::nullopt});
+    d.materials.emplace_back();
+    const Scene scene(std::move(d));
+    const Ray ray{{0.0f, -0.2f, -5.0f}, {0.0f, 0.0f, 1.0f}};
+    for (std::uint32_t prim : {0u, 1u}) {
+        Hit hit;
+        ASSERT_TRUE(scene.intersect_primitive(0, prim, ray, hit)) << prim;
+        EXPECT_EQ(hit.prim, prim);
+        EXPECT_FLOAT_EQ(hit.t, prim == 0 ? 5.0f : 6.0f);
+    }
+}
+
 }  // namespace
 }  // namespace rt
