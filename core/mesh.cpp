@@ -10,8 +10,8 @@
 #include "core/parallel.h"
 #include "core/shapes.h"
 
-// For the leaf tests handed to a traversal: GCC otherwise leaves them as calls (bunny,
-// 2 threads: shadow rays 1.24x -> 0.97x Embree's time, secondary 1.45x -> 1.17x).
+// For the leaf tests handed to a traversal: GCC otherwise leaves them as calls. (On the
+// bunny the difference was within rtbench's run-to-run noise: docs/BENCHMARKS.md.)
 #define RT_FORCE_INLINE __attribute__((always_inline))
 
 namespace rt {

@@ -9,7 +9,6 @@
 #include <glm/matrix.hpp>
 
 #include "app/gl/debug.h"
-#include "core/stopwatch.h"
 
 namespace rt::gl {
 
@@ -209,20 +208,14 @@ RasterRenderer::Frame RasterRenderer::render_with_item_buffer(const Camera& came
     Frame frame;
     if (shares_item_buffer()) {
         const Framebuffer& fb = render_to_texture(camera, true);
-        Stopwatch watch;
         Framebuffer::ItemBufferRead ids = fb.start_item_buffer_read();
-        double read = watch.lap();
         frame.image = fb.read_colour();  // meanwhile, on a GPU
-        watch.restart();
         frame.ids = ids.finish();
-        frame.ids_read_seconds = read + watch.seconds();
         frame.shared = true;
         return frame;
     }
     frame.image = render(camera);
-    const Stopwatch watch;
     frame.ids = render_item_buffer(camera);
-    frame.ids_read_seconds = watch.seconds();
     return frame;
 }
 

@@ -44,8 +44,7 @@ class RasterRenderer {
     struct Frame {
         Image image;
         ItemBuffer ids;
-        bool shared = false;          // from the colour pass itself
-        double ids_read_seconds = 0;  // reading the ids back (shared) or their whole pass
+        bool shared = false;  // from the colour pass itself
     };
     Frame render_with_item_buffer(const Camera& camera);
 
