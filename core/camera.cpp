@@ -22,12 +22,6 @@ Camera Camera::look_at(const vec3& eye, const vec3& target, const vec3& up, floa
     return cam;
 }
 
-Ray Camera::ray_at(float px, float py) const {
-    const float sx = W * (2.0f * px / static_cast<float>(cols) - 1.0f);
-    const float sy = H * (2.0f * py / static_cast<float>(rows) - 1.0f);
-    return Ray{eye, -N * n + sx * u + sy * v};
-}
-
 glm::mat4 Camera::view() const {
     glm::mat4 m(1.0f);
     for (int c = 0; c < 3; ++c) {  // rows of the rotation are u, v, n

@@ -31,7 +31,15 @@ struct Camera {
         return ray_at(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
     }
     // The same for a continuous position on the pixel grid.
-    Ray ray_at(float px, float py) const;
+    Ray ray_at(float px, float py) const { return Ray{eye, across(px) + upward(py)}; }
+    // ray_at's direction as a term per column plus a term per row: the renderer computes
+    // each once a tile and adds them per pixel, the same sum bit for bit.
+    vec3 across(float px) const {  // -N n + W (2 px / nCols - 1) u
+        return -N * n + W * (2.0f * px / static_cast<float>(cols) - 1.0f) * u;
+    }
+    vec3 upward(float py) const {  // H (2 py / nRows - 1) v
+        return H * (2.0f * py / static_cast<float>(rows) - 1.0f) * v;
+    }
 
     // The same camera for the raster pipeline: view = the (u, v, n, eye) frame,
     // projection = glFrustum(-W, W, -H, H, N, far).

@@ -70,6 +70,27 @@ Hit primary_hit(const Scene& scene, const Ray& ray, const ItemBuffer* ib, int x,
     return hit;
 }
 
+// Sample s of every pixel of tile t, row by row. For one sample per pixel (the pixel
+// centres) each column's and each row's term of the direction is computed once
+// (Camera::across, Camera::upward): the same rays as Camera::ray, without two divisions
+// a pixel.
+void tile_rays(const Camera& camera, const Tile& t, int s, int spp, std::vector<Ray>& rays,
+               std::vector<vec3>& columns) {
+    std::size_t i = 0;
+    if (spp > 1) {
+        for (int y = t.y0; y < t.y1; ++y)
+            for (int x = t.x0; x < t.x1; ++x) rays[i++] = pixel_sample(camera, x, y, s, spp);
+        return;
+    }
+    columns.resize(static_cast<std::size_t>(t.x1 - t.x0));
+    for (int x = t.x0; x < t.x1; ++x)
+        columns[x - t.x0] = camera.across(static_cast<float>(x) + 0.5f);
+    for (int y = t.y0; y < t.y1; ++y) {
+        const vec3 row = camera.upward(static_cast<float>(y) + 0.5f);
+        for (const vec3& column : columns) rays[i++] = Ray{camera.eye, column + row};
+    }
+}
+
 }  // namespace
 
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats,
@@ -98,76 +119,49 @@ struct Pass {
     }
 };
 
-// One sample per pixel in two passes over the image: every first hit (from the item
-// buffer where there is one), then their shading. Times are the passes' wall times.
-bool render_in_two_passes(const Pass& p, TileRunner& runner, std::stop_token stop,
-                          RayCounts& counts, RenderStats& times) {
-    const int width = p.image.width;
-    std::vector<Hit> hits(p.image.pixels.size());
-    const Stopwatch primary_watch;
-    bool complete = runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
-        std::uint64_t fell = 0;
-        for (int y = t.y0; y < t.y1; ++y) {
-            for (int x = t.x0; x < t.x1; ++x) {
-                bool fell_back = false;
-                hits[static_cast<std::size_t>(y) * width + x] =
-                    primary_hit(p.scene, p.camera.ray(x, y), p.item_buffer, x, y, fell_back);
-                fell += fell_back;
-                ++local.primary;
-            }
-        }
-        p.fallbacks.fetch_add(fell, std::memory_order_relaxed);
-    });
-    times.primary_seconds = primary_watch.seconds();
-    const Stopwatch shade_watch;
-    complete = complete && runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
-        // Each worker its own copy (a few words): the shared one sat on the calling
-        // thread's stack beside what that thread writes for every ray, and reading it made
-        // the two threads wait on each other's cache line (whitted at 1280 x 720 on two
-        // threads, medians of 7 to 9 runs: 0.164 s with the shared tracer, 0.134 s with
-        // copies).
-        const Tracer mine = p.tracer;
-        for (int y = t.y0; y < t.y1; ++y)
-            for (int x = t.x0; x < t.x1; ++x)
-                p.image.at(x, y) = p.finite(mine.shade_hit(
-                    p.camera.ray(x, y), hits[static_cast<std::size_t>(y) * width + x], local));
-    });
-    times.secondary_seconds = shade_watch.seconds();
-    return complete;
-}
-
-// Many samples per pixel: each tile takes all its samples before the next tile, in one
-// pass over the image, so that no thread waits for the others between samples (as it
-// did with two passes per sample: --spp 16 cost 17.5-19.1 x --spp 1 on whitted). The
-// sum per pixel runs over the samples in order, as before. The wall time is split
+// Each tile takes all its samples before the next tile, in one pass over the image: per
+// sample, the first hits of the tile's pixels (from the item buffer where there is one),
+// then their shading. The rays and hits of a tile stay in the cache (a frame-sized buffer
+// of hits written by one pass and read by a second cost the item buffer's primary pass
+// as much time as its intersection tests), and no thread waits for the others between
+// the passes or the samples (two passes per sample: --spp 16 cost 17.5-19.1 x --spp 1 on
+// whitted). The sum per pixel runs over the samples in order. The wall time is split
 // between first hits and shading in the proportion of the threads' time in each.
 bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, RayCounts& counts,
                     RenderStats& times) {
     std::atomic<std::int64_t> primary_ns{0}, shade_ns{0};
     const Stopwatch watch;
     const bool complete = runner.run(stop, counts, [&](const Tile& t, RayCounts& local) {
+        // Each worker its own copy of the tracer (a few words): a shared one sat on the
+        // calling thread's stack beside what that thread writes for every ray, and reading
+        // it made the threads wait on each other's cache line (whitted at 1280 x 720 on
+        // two threads, medians of 7 to 9 runs: 0.164 s shared, 0.134 s copied).
         const Tracer mine = p.tracer;
         const int w = t.x1 - t.x0;
-        std::vector<Hit> hits(static_cast<std::size_t>(w) * (t.y1 - t.y0));
+        const std::size_t n = static_cast<std::size_t>(w) * (t.y1 - t.y0);
+        std::vector<Ray> rays(n);
+        std::vector<Hit> hits(n);
+        std::vector<vec3> columns;
         double primary = 0.0, shade = 0.0;
+        std::uint64_t fell = 0;
         for (int s = 0; s < p.spp; ++s) {
             Stopwatch lap;
-            for (int y = t.y0; y < t.y1; ++y) {
-                for (int x = t.x0; x < t.x1; ++x) {
-                    Hit& hit = hits[static_cast<std::size_t>(y - t.y0) * w + (x - t.x0)];
-                    hit = Hit{};
-                    p.scene.intersect(pixel_sample(p.camera, x, y, s, p.spp), hit);
-                    ++local.primary;
+            tile_rays(p.camera, t, s, p.spp, rays, columns);
+            for (int y = t.y0, i = 0; y < t.y1; ++y) {
+                for (int x = t.x0; x < t.x1; ++x, ++i) {
+                    bool fell_back = false;
+                    hits[i] = primary_hit(p.scene, rays[i], p.item_buffer, x, y, fell_back);
+                    fell += fell_back;
                 }
             }
+            local.primary += n;
             primary += lap.lap();
-            for (int y = t.y0; y < t.y1; ++y)
-                for (int x = t.x0; x < t.x1; ++x)
-                    p.image.at(x, y) += p.finite(mine.shade_hit(
-                        pixel_sample(p.camera, x, y, s, p.spp),
-                        hits[static_cast<std::size_t>(y - t.y0) * w + (x - t.x0)], local));
+            for (int y = t.y0, i = 0; y < t.y1; ++y)
+                for (int x = t.x0; x < t.x1; ++x, ++i)
+                    p.image.at(x, y) += p.finite(mine.shade_hit(rays[i], hits[i], local));
             shade += lap.lap();
         }
+        p.fallbacks.fetch_add(fell, std::memory_order_relaxed);
         primary_ns.fetch_add(static_cast<std::int64_t>(primary * 1e9), std::memory_order_relaxed);
         shade_ns.fetch_add(static_cast<std::int64_t>(shade * 1e9), std::memory_order_relaxed);
     });
@@ -175,8 +169,10 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
     const double busy = static_cast<double>(primary_ns.load() + shade_ns.load());
     times.primary_seconds = busy > 0.0 ? wall * static_cast<double>(primary_ns.load()) / busy : 0.0;
     times.secondary_seconds = wall - times.primary_seconds;
-    const float scale = 1.0f / static_cast<float>(p.spp);
-    for (vec3& c : p.image.pixels) c *= scale;
+    if (p.spp > 1) {
+        const float scale = 1.0f / static_cast<float>(p.spp);
+        for (vec3& c : p.image.pixels) c *= scale;
+    }
     return complete;
 }
 
@@ -198,13 +194,12 @@ Image render(const Scene& scene, const Camera& camera, const RenderOptions& opti
     RayCounts counts;
     const int tile_size = std::max(1, options.tile_size);
     const int tiles = tile_count(width, height, tile_size);
-    TileRunner runner(width, height, tile_size, threads, progress, spp > 1 ? tiles : 2 * tiles);
+    TileRunner runner(width, height, tile_size, threads, progress, tiles);
     const Tracer tracer(scene, options.trace);
     const Pass pass{scene, camera, tracer, spp, item_buffer, image, nonfinite, fallbacks};
     const Stopwatch watch;
     RenderStats times;
-    const bool complete = spp > 1 ? render_by_tile(pass, runner, stop, counts, times)
-                                  : render_in_two_passes(pass, runner, stop, counts, times);
+    const bool complete = render_by_tile(pass, runner, stop, counts, times);
     if (stats) {
         stats->rays = counts;
         stats->threads = std::min(threads, tiles);

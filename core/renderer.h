@@ -1,6 +1,6 @@
 #pragma once
-// Renders a scene in tiles on worker threads, in two passes: the primary hits of every
-// pixel (from a full traversal, or from the item buffer), then the shading with its
+// Renders a scene in tiles on worker threads, each tile in two steps: the primary hits of
+// its pixels (from a full traversal, or from the item buffer), then their shading with
 // shadow feelers and secondary rays. Each pixel depends on nothing but the scene, so the
 // image is the same, byte for byte, whatever the thread count.
 
@@ -33,8 +33,9 @@ Ray pixel_sample(const Camera& camera, int x, int y, int s, int spp);
 struct RenderStats {
     RayCounts rays;
     int threads = 0;
-    double seconds = 0.0;                     // both passes
-    double primary_seconds = 0.0;             // finding the first hits
+    double seconds = 0.0;                     // the whole image
+    double primary_seconds = 0.0;             // finding the first hits (the wall time
+                                              // split as the threads' time was)
     double secondary_seconds = 0.0;           // shading: shadow feelers, reflection, refraction
     std::uint64_t nonfinite_pixels = 0;       // replaced by black; should stay 0
     std::uint64_t item_buffer_fallbacks = 0;  // pixels the item buffer could not settle
