@@ -13,36 +13,41 @@
 
 namespace rt::bench {
 
-int run_item_buffer(const ItemBufferBenchOptions& o) {
-    rt::LoadedScene loaded = rt::load_scene(o.scene);
-    loaded.scene.camera = loaded.scene.camera.resized(o.width, o.height);
-    const rt::Scene scene(std::move(loaded.scene));
-    const auto context = rt::gl::create_headless_context(o.gl, "rtbench");
-    rt::gl::RasterRenderer raster(scene);
-    rt::RenderOptions options;
-    options.threads = o.threads;
+namespace {
 
+// Per frame: a trace without the item buffer, one with it from its own pass, and (where
+// the raster can share its pass) a plain raster frame and one that draws the ids too.
+struct Samples {
     std::vector<double> plain_frame, plain_primary, ib_pass, ib_primary, ib_frame, trace_with,
         raster_plain, raster_shared;
-    rt::ItemBuffer ib = raster.render_item_buffer(scene.camera);  // warm-up: buffers, sphere meshes
-    const bool can_share = raster.shares_item_buffer();
-    if (can_share) (void)raster.render_with_item_buffer(scene.camera);
     rt::Image with, without;
-    rt::RenderStats stats;
+    rt::RenderStats stats;  // the last trace with the item buffer
+    bool can_share = false;
+};
+
+Samples measure(const ItemBufferBenchOptions& o, const rt::Scene& scene,
+                rt::gl::RasterRenderer& raster) {
+    rt::RenderOptions options;
+    options.threads = o.threads;
+    Samples m;
+    rt::ItemBuffer ib = raster.render_item_buffer(scene.camera);  // warm-up: buffers, sphere meshes
+    m.can_share = raster.shares_item_buffer();
+    if (m.can_share) (void)raster.render_with_item_buffer(scene.camera);
     for (int k = 0; k < o.repeats + 1; ++k) {  // the first round is a warm-up
-        without = rt::render(scene, options, &stats);
+        m.without = rt::render(scene, options, &m.stats);
         if (k > 0)
-            plain_frame.push_back(stats.seconds), plain_primary.push_back(stats.primary_seconds);
+            m.plain_frame.push_back(m.stats.seconds),
+                m.plain_primary.push_back(m.stats.primary_seconds);
         rt::Stopwatch watch;
         ib = raster.render_item_buffer(scene.camera);
         const double pass = watch.seconds();
-        with = rt::render(scene, options, &stats, {}, {}, &ib);
+        m.with = rt::render(scene, options, &m.stats, {}, {}, &ib);
         if (k > 0) {
-            ib_pass.push_back(pass);
-            ib_primary.push_back(stats.primary_seconds);
-            ib_frame.push_back(pass + stats.seconds);
+            m.ib_pass.push_back(pass);
+            m.ib_primary.push_back(m.stats.primary_seconds);
+            m.ib_frame.push_back(pass + m.stats.seconds);
         }
-        if (!can_share) continue;
+        if (!m.can_share) continue;
         // From the raster pass: what drawing and reading the ids adds to a raster frame
         // (drawn anyway, to be compared with the traced one).
         watch.restart();
@@ -54,17 +59,22 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
             throw rt::Error(o.scene, "item buffer",
                             "the raster pass's item buffer differs from the dedicated pass's");
         if (k > 0) {
-            raster_plain.push_back(plain_raster);
-            raster_shared.push_back(with_ids);
-            trace_with.push_back(stats.seconds);
+            m.raster_plain.push_back(plain_raster);
+            m.raster_shared.push_back(with_ids);
+            m.trace_with.push_back(m.stats.seconds);
         }
     }
-    const std::uint64_t differing = rt::item_buffer_disagreements(with, without);
-    const double frame0 = median(plain_frame), frame1 = median(ib_frame);
-    const double primary0 = median(plain_primary), primary1 = median(ib_primary),
-                 pass = median(ib_pass);
+    return m;
+}
+
+// Prints the medians (and writes them as JSON); 0 when the images agree but for 0.1 %.
+int report(const ItemBufferBenchOptions& o, const std::string& gl, const Samples& m) {
+    const std::uint64_t differing = rt::item_buffer_disagreements(m.with, m.without);
+    const double frame0 = median(m.plain_frame), frame1 = median(m.ib_frame);
+    const double primary0 = median(m.plain_primary), primary1 = median(m.ib_primary),
+                 pass = median(m.ib_pass);
     std::printf("%s at %dx%d, %d threads, %s; medians of %d frames\n", o.scene.c_str(), o.width,
-                o.height, o.threads, context->description().c_str(), o.repeats);
+                o.height, o.threads, gl.c_str(), o.repeats);
     std::printf("without item buffer: frame %.1f ms, primary rays %.1f ms\n", 1e3 * frame0,
                 1e3 * primary0);
     const auto net = [&](double frame) {
@@ -77,27 +87,28 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
         1e3 * frame1, 1e3 * pass, 1e3 * (frame1 - pass), 1e3 * primary1);
     net(frame1);
     double frame2 = 0.0, shared = 0.0;
-    if (can_share) {
+    if (m.can_share) {
         // What the ids add to the raster frame (both frames read their colours back, which
         // waits for the drawing: llvmpipe draws only when something is read).
-        shared = std::max(0.0, median(raster_shared) - median(raster_plain));
-        frame2 = shared + median(trace_with);
+        shared = std::max(0.0, median(m.raster_shared) - median(m.raster_plain));
+        frame2 = shared + median(m.trace_with);
         std::printf(
             "with item buffer, from the raster pass: frame %.1f ms = ids drawn and read back %.1f "
             "ms (the raster frame %.1f -> %.1f ms) + trace %.1f ms; ",
-            1e3 * frame2, 1e3 * shared, 1e3 * median(raster_plain), 1e3 * median(raster_shared),
-            1e3 * (frame2 - shared));
+            1e3 * frame2, 1e3 * shared, 1e3 * median(m.raster_plain),
+            1e3 * median(m.raster_shared), 1e3 * (frame2 - shared));
         net(frame2);
     }
+    const std::uint64_t fell_back = m.stats.item_buffer_fallbacks;
     std::printf("primary rays: %.2fx faster; %llu fell back, %llu of %zu pixels differ\n",
-                primary0 / primary1, static_cast<unsigned long long>(stats.item_buffer_fallbacks),
-                static_cast<unsigned long long>(differing), with.pixels.size());
+                primary0 / primary1, static_cast<unsigned long long>(fell_back),
+                static_cast<unsigned long long>(differing), m.with.pixels.size());
     if (!o.json.empty()) {
         nlohmann::json j = {{"scene", o.scene},
                             {"width", o.width},
                             {"height", o.height},
                             {"threads", o.threads},
-                            {"gl", context->description()},
+                            {"gl", gl},
                             {"frame_seconds_without", frame0},
                             {"frame_seconds_with", frame1},
                             {"primary_seconds_without", primary0},
@@ -105,17 +116,29 @@ int run_item_buffer(const ItemBufferBenchOptions& o) {
                             {"primary_speedup", primary0 / primary1},
                             {"raster_pass_seconds", pass},
                             {"net_speedup", frame0 / frame1},
-                            {"fallback_pixels", stats.item_buffer_fallbacks},
+                            {"fallback_pixels", fell_back},
                             {"differing_pixels", differing}};
-        if (can_share) {
+        if (m.can_share) {
             j["shared_pass_seconds"] = shared;
             j["frame_seconds_with_shared"] = frame2;
             j["net_speedup_shared"] = frame0 / frame2;
         }
         std::ofstream(o.json) << j.dump(2) << '\n';
     }
-    return static_cast<double>(differing) <= 0.001 * static_cast<double>(with.pixels.size()) ? 0
-                                                                                             : 1;
+    const auto pixels = static_cast<double>(m.with.pixels.size());
+    return static_cast<double>(differing) <= 0.001 * pixels ? 0 : 1;
+}
+
+}  // namespace
+
+int run_item_buffer(const ItemBufferBenchOptions& o) {
+    rt::LoadedScene loaded = rt::load_scene(o.scene);
+    loaded.scene.camera = loaded.scene.camera.resized(o.width, o.height);
+    const rt::Scene scene(std::move(loaded.scene));
+    const auto context = rt::gl::create_headless_context(o.gl, "rtbench");
+    rt::gl::RasterRenderer raster(scene);
+    const Samples samples = measure(o, scene, raster);
+    return report(o, context->description(), samples);
 }
 
 }  // namespace rt::bench

@@ -40,7 +40,8 @@ class RasterRenderer {
     // The colour pass and its item buffer: from one draw where it can (one sample a
     // pixel: an id cannot be averaged, so with MSAA the ids take a pass of their own).
     // The same ids as render_item_buffer() either way (GL test).
-    bool shares_item_buffer() const { return msaa_ == 1; }
+    static bool shares_item_buffer_at(int msaa) { return msaa == 1; }
+    bool shares_item_buffer() const { return shares_item_buffer_at(msaa_); }
     struct Frame {
         Image image;
         ItemBuffer ids;

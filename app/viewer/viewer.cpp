@@ -310,14 +310,15 @@ View Viewer::shown_view() const {
 bool Viewer::traced_stale() const { return shown_.stale(trace_key()); }
 
 GLuint Viewer::raster_texture(const rt::Camera& camera) {
-    const bool ids = settings_.item_buffer && settings_.msaa == 1;  // see RasterRenderer
+    const bool ids =
+        settings_.item_buffer && rt::gl::RasterRenderer::shares_item_buffer_at(settings_.msaa);
     if (raster_camera_ != camera || raster_msaa_ != settings_.msaa ||
         raster_shadows_ != settings_.shadow_maps || raster_env_ != settings_.environment_maps ||
         raster_ids_ != ids) {
         apply_raster_settings();
         const rt::Stopwatch watch;
         raster_fb_ = &raster_->render_to_texture(camera, ids);
-        raster_ids_ = ids && raster_->shares_item_buffer();
+        raster_ids_ = ids;
         raster_texture_ = raster_fb_->texture();
         glFinish();  // so that the time is the GPU's too
         stats_.raster_ms = watch.milliseconds();
