@@ -30,6 +30,16 @@ struct ItemBuffer {
     // raster answer can be trusted for the analytic shapes too.
     bool interior(int x, int y) const {
         const std::uint32_t id = object[index(x, y)];
+        if (x > 0 && y > 0 && x + 1 < width && y + 1 < height) {
+            // Away from the image's edges: the nine compared at once, no branch each.
+            const std::uint32_t* below = &object[index(x - 1, y - 1)];
+            const std::uint32_t* row = below + width;
+            const std::uint32_t* above = row + width;
+            std::uint32_t differ = 0;
+            for (int dx = 0; dx < 3; ++dx)
+                differ |= (below[dx] ^ id) | (row[dx] ^ id) | (above[dx] ^ id);
+            return differ == 0;
+        }
         for (int dy = -1; dy <= 1; ++dy) {
             for (int dx = -1; dx <= 1; ++dx) {
                 const int nx = x + dx, ny = y + dy;
