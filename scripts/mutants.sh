@@ -219,6 +219,12 @@ mutant item-buffer-lanes-unmasked core/mesh.cpp \
 mutant shared-ids-written-by-lines app/gl/raster_renderer.cpp \
     'if (drawing_ids_) {' 'if (false) {' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*TheColourPassDrawsTheSameItemBuffer*'
+mutant tile-rays-off-centre core/renderer.cpp \
+    'camera.across(static_cast<float>(x) + 0.5f)' 'camera.across(static_cast<float>(x) + 0.49f)' \
+    rt_tests $(unit 'Render.EveryPixelIsItsCentresRayTracedAlone')
+mutant item-buffer-interior-misses-a-column core/item_buffer.h \
+    'for (int dx = 0; dx < 3; ++dx)' 'for (int dx = 0; dx < 2; ++dx)' \
+    rt_tests $(unit 'ItemBuffer.Interior*')
 mutant small-scene-far-out-not-rebased core/scene_loader.cpp \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')

@@ -22,6 +22,7 @@ packages=(
   libembree-dev gnuplot-nox           # rtbench: the reference BVH, and its plots
   clang libclang-rt-14-dev            # libFuzzer targets (scripts/fuzz.sh)
   povray                              # the oracle test: an independent tracer
+  rsync                               # scripts/mutants.sh: copies the tree to plant bugs in
 )
 
 missing=()

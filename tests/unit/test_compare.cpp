@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/compare.h"
+#include "core/item_buffer.h"
 
 namespace rt {
 namespace {
@@ -82,6 +83,37 @@ TEST(Compare, DifferenceImageMapsErrorsOntoTheScale) {
     EXPECT_TRUE(near(d.at(2, 2), heat_colour(1.0f)));
     EXPECT_TRUE(near(d.at(5, 5), heat_colour(1.0f)));
     EXPECT_FALSE(near(d.at(1, 1), heat_colour(1.0f)));
+}
+
+// interior() against its definition, pixel by pixel, on random ids of a few values (so
+// that blocks of one id occur), edges and corners included.
+TEST(ItemBuffer, InteriorMeansTheNeighboursInsideTheImageShareTheId) {
+    for (const auto [w, h] : {std::pair{1, 1}, std::pair{2, 7}, std::pair{9, 6}, std::pair{33, 17}}) {
+        ItemBuffer ib(w, h);
+        std::uint32_t state = 12345u;
+        for (std::uint32_t& id : ib.object) {
+            state = state * 1664525u + 1013904223u;
+            id = (state >> 24) % 7 == 0 ? 2u : 1u;
+        }
+        int interior = 0;
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                bool expected = true;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int nx = x + dx, ny = y + dy;
+                        if (nx >= 0 && ny >= 0 && nx < w && ny < h)
+                            expected &= ib.object[ib.index(nx, ny)] == ib.object[ib.index(x, y)];
+                    }
+                EXPECT_EQ(ib.interior(x, y), expected) << w << "x" << h << " at " << x << ", " << y;
+                interior += expected;
+            }
+        }
+        if (w * h > 50) {
+            EXPECT_GT(interior, 0);  // both answers occur
+            EXPECT_LT(interior, w * h);
+        }
+    }
 }
 
 TEST(Compare, ItemBufferImageColoursIdsAndLeavesEmptyBlack) {

@@ -28,6 +28,26 @@ TEST(Render, SameBytesWhateverTheThreadCount) {
     }
 }
 
+// Each pixel is the tutorial's ray through its centre (Camera::ray), traced alone: the
+// renderer's per-tile rays (a column term plus a row term) and its tiles change nothing.
+TEST(Render, EveryPixelIsItsCentresRayTracedAlone) {
+    const Scene scene(test::shipped_scene("whitted.json", 61, 37));
+    RenderOptions options;
+    options.tile_size = 16;  // partial tiles at the right and the top
+    options.trace.max_depth = 2;
+    const Image image = render(scene, options);
+    const Tracer tracer(scene, options.trace);
+    int differing = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            RayCounts counts;
+            const vec3 alone = tracer.trace_primary(scene.camera.ray(x, y), counts);
+            differing += std::memcmp(&alone, &image.at(x, y), sizeof(vec3)) != 0;
+        }
+    }
+    EXPECT_EQ(differing, 0);
+}
+
 // A built Scene is read-only in its type: no member can be assigned, and it is never
 // copied. Its description() builds again, with any structure, into the same picture.
 static_assert(!std::is_copy_constructible_v<Scene> && !std::is_move_constructible_v<Scene>);
