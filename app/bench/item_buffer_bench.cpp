@@ -95,8 +95,8 @@ int report(const ItemBufferBenchOptions& o, const std::string& gl, const Samples
         std::printf(
             "with item buffer, from the raster pass: frame %.1f ms = ids drawn and read back %.1f "
             "ms (the raster frame %.1f -> %.1f ms) + trace %.1f ms; ",
-            1e3 * frame2, 1e3 * shared, 1e3 * median(m.raster_plain),
-            1e3 * median(m.raster_shared), 1e3 * (frame2 - shared));
+            1e3 * frame2, 1e3 * shared, 1e3 * median(m.raster_plain), 1e3 * median(m.raster_shared),
+            1e3 * (frame2 - shared));
         net(frame2);
     }
     const std::uint64_t fell_back = m.stats.item_buffer_fallbacks;

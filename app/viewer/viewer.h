@@ -130,8 +130,9 @@ class Viewer {
     // failed to load or to finish tracing.
     int benchmark(const std::vector<std::string>& scenes);
 
-    // GLFW input, forwarded by the static callbacks.
+    // GLFW input, forwarded by the static callbacks (app/viewer/viewer_input.cpp).
     void on_key(int key, int scancode, int action, int mods);
+    void on_char(unsigned int c);
     void on_mouse_button(int button, int action);
     void on_cursor(double x, double y);
     void on_scroll(double dy);

@@ -88,7 +88,8 @@ TEST(Compare, DifferenceImageMapsErrorsOntoTheScale) {
 // interior() against its definition, pixel by pixel, on random ids of a few values (so
 // that blocks of one id occur), edges and corners included.
 TEST(ItemBuffer, InteriorMeansTheNeighboursInsideTheImageShareTheId) {
-    for (const auto [w, h] : {std::pair{1, 1}, std::pair{2, 7}, std::pair{9, 6}, std::pair{33, 17}}) {
+    for (const auto& [w, h] :
+         {std::pair{1, 1}, std::pair{2, 7}, std::pair{9, 6}, std::pair{33, 17}}) {
         ItemBuffer ib(w, h);
         std::uint32_t state = 12345u;
         for (std::uint32_t& id : ib.object) {
