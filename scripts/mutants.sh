@@ -84,7 +84,8 @@ mutant specular-without-exponent core/tracer.cpp \
     'm.ks * std::pow(r_dot_v, m.shininess)' 'm.ks * r_dot_v' \
     rt_tests $(unit 'Phong.*')
 mutant refinement-skips-levels app/viewer/trace_job.cpp \
-    'for (int level : request.levels) {' 'for (int level : {request.levels.back()}) {' \
+    'for (std::size_t i = 0; i < request.levels.size(); ++i) {' \
+    'for (std::size_t i = request.levels.size() - 1; i < request.levels.size(); ++i) {' \
     rt_viewer_tests tests/rt_viewer_tests --gtest_filter='TraceJob.*'
 mutant superseded-result-kept app/viewer/trace_job.cpp \
     'result_.reset();  // an untaken result' '// an untaken result' \
@@ -106,7 +107,7 @@ mutant switcher-controls-ignore-modifiers app/viewer/keys.h \
 mutant near-plane-ignores-planes app/gl/gpu_scene.cpp \
     'nearest = std::min(nearest, plane_distance(*p, o, camera.eye));' '(void)p;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*Skimming*'
-mutant keys-reach-imgui-focus app/viewer/viewer.cpp \
+mutant keys-reach-imgui-focus app/viewer/viewer_input.cpp \
     'if (editing || is_modifier(key) || action == GLFW_RELEASE)
         window_.forward_key(key, scancode, action, mods);
     if (editing) return;' \
@@ -123,7 +124,7 @@ mutant diff-against-the-full-raster app/viewer/viewer.cpp \
     'in.view == View::kDiff && coarse' 'false && coarse' \
     rtview ctest -R '^gui[.]' --output-on-failure
 mutant ray-tree-without-local-terms core/tracer.cpp \
-    'if (recorder_) recorder_->open().local = colour;' '' \
+    'if (recorder_) recorder_->open().local = parts.local;' '' \
     rt_tests $(unit 'RayTree.*')
 mutant typed-slider-values-unclamped app/viewer/viewer_panel.cpp \
     'constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;' \
@@ -147,8 +148,8 @@ mutant wide-bvh-skips-a-child core/wide_bvh.h \
     'for (mask &= mask - 1, mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
     rt_tests $(unit '*WideBvh*:*Accel*')
 mutant glsl-specular-dropped shaders/phong.frag \
-    'colour += (u_kd * c * n_dot_l + specular) * u_light_colour[i];' \
-    'colour += (u_kd * c * n_dot_l) * u_light_colour[i];' \
+    'colour += visible * (u_kd * c * n_dot_l + specular) * u_light_colour[i];' \
+    'colour += visible * (u_kd * c * n_dot_l) * u_light_colour[i];' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*RasterEqualsLocal*'
 mutant far-scenes-not-rebased core/scene_loader.cpp \
     'constexpr double kFarFromOrigin = 4096.0;' 'constexpr double kFarFromOrigin = 1e300;' \
@@ -179,10 +180,8 @@ mutant near-light-behind-offset-dark core/tracer.cpp \
 mutant egl-display-terminated-early app/gl/context_egl.cpp \
     'display_refs().release(display_);' 'eglTerminate(display_);' \
     rt_gl_tests "${gl[@]}" --gtest_filter='GlContexts.*'
-mutant item-buffer-tutorial-triangle core/scene.cpp \
-    'if (h.lane != 0) return false;
-    hit = Hit{h.t, object, prim, h.b1, h.b2};' 'if (h.lane != 0) return false;
-    hit = Hit{h.t * (1.0f + 1e-6f), object, prim, h.b1, h.b2};' \
+mutant item-buffer-tutorial-triangle core/mesh.cpp \
+    '    hit.t = h.t;' '    hit.t = h.t * (1.0f + 1e-6f);' \
     rt_tests $(unit 'Triangle.*')
 
 mutant gl-handle-never-deletes app/gl/handle.h \
