@@ -13,6 +13,7 @@
 #include "core/grid.h"
 #include "core/names.h"
 #include "core/wide_bvh.h"
+#include "core/wide_bvh_packet.h"
 
 namespace rt {
 
@@ -85,6 +86,21 @@ class Accel {
         return traverse<kAnyHit>(ray, t_max, [&](std::uint32_t slot, float& limit) {
             return hit_leaf(slot, 1u, limit);
         });
+    }
+    // Up to kPacketWidth rays at once, as WideBvh::traverse_packet: `hit_leaf(first_slot,
+    // count, lanes)` returns the lanes that hit. The wide BVH traces them as a packet; the
+    // other structures a ray at a time.
+    template <bool kAnyHit, class HitLeaf>
+    void traverse_packet(const Ray* rays, float* t_max, unsigned active, HitLeaf&& hit_leaf) const {
+        if (const auto* wide = std::get_if<DefaultWideBvh>(&impl_))
+            return wide->traverse_packet<kAnyHit>(rays, t_max, active, hit_leaf);
+        for (active &= (1u << kPacketWidth) - 1u; active != 0; active &= active - 1) {
+            const unsigned lane = __builtin_ctz(active);
+            traverse_leaves<kAnyHit>(rays[lane], t_max[lane],
+                                     [&](std::uint32_t first, std::uint32_t count, float&) {
+                                         return hit_leaf(first, count, 1u << lane) != 0;
+                                     });
+        }
     }
     // The leaves traverse_leaves() hands out, as `f(first_slot, count)`, in slot order.
     template <class F>

@@ -1,7 +1,9 @@
 #include "core/mesh.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -130,6 +132,74 @@ bool TriangleMesh::occluded(const Ray& r, float t_max) const {
                 if (rt::intersect(packs_[start + k], sheared, t_limit).lane >= 0) return true;
             return false;
         });
+}
+
+unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned active) const {
+    std::array<float, kPacketWidth> t_max;
+    std::array<std::optional<ShearedRay>, kPacketWidth> sheared;
+    for (unsigned m = active; m != 0; m &= m - 1) {
+        const unsigned lane = __builtin_ctz(m);
+        t_max[lane] = hits[lane].t;
+        sheared[lane].emplace(rays[lane]);
+    }
+    unsigned found = 0;
+    accel_.traverse_packet<false>(
+        rays, t_max.data(), active,
+        [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
+            unsigned hit = 0;
+            const std::uint32_t start = first_pack(leaf);
+            for (; lanes != 0; lanes &= lanes - 1) {
+                const unsigned lane = __builtin_ctz(lanes);
+                for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
+                    const Triangle4Hit h =
+                        rt::intersect(packs_[start + k], *sheared[lane], t_max[lane]);
+                    if (h.lane < 0) continue;
+                    t_max[lane] = h.t;
+                    Hit& out = hits[lane];
+                    out.prim = pack_prims_[kTriangle4Lanes * (start + k) +
+                                           static_cast<std::uint32_t>(h.lane)];
+                    out.b1 = h.b1;
+                    out.b2 = h.b2;
+                    hit |= 1u << lane;
+                }
+            }
+            found |= hit;
+            return hit;
+        });
+    for (unsigned m = found; m != 0; m &= m - 1) {
+        const unsigned lane = __builtin_ctz(m);
+        hits[lane].t = t_max[lane];
+    }
+    return found;
+}
+
+unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsigned active) const {
+    std::array<float, kPacketWidth> limits;
+    std::array<std::optional<ShearedRay>, kPacketWidth> sheared;
+    for (unsigned m = active; m != 0; m &= m - 1) {
+        const unsigned lane = __builtin_ctz(m);
+        limits[lane] = t_max[lane];
+        sheared[lane].emplace(rays[lane]);
+    }
+    unsigned blocked = 0;
+    accel_.traverse_packet<true>(
+        rays, limits.data(), active,
+        [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
+            unsigned hit = 0;
+            const std::uint32_t start = first_pack(leaf);
+            for (; lanes != 0; lanes &= lanes - 1) {
+                const unsigned lane = __builtin_ctz(lanes);
+                for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
+                    if (rt::intersect(packs_[start + k], *sheared[lane], limits[lane]).lane >= 0) {
+                        hit |= 1u << lane;
+                        break;
+                    }
+                }
+            }
+            blocked |= hit;
+            return hit;
+        });
+    return blocked;
 }
 
 vec3 TriangleMesh::face_normal(std::uint32_t tri) const {

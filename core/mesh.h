@@ -38,6 +38,11 @@ struct TriangleMesh {
     // Closest hit in (0, hit.t): fills t, prim, b1, b2 and returns true.
     bool intersect(const Ray& r, Hit& hit) const;
     bool occluded(const Ray& r, float t_max) const;
+    // The same for up to kPacketWidth rays at once (rays[lane], hits[lane] for each bit
+    // of `active`), traced together: each gets the answer it gets alone (of two hits at
+    // the very same t, either). Return the bits of the rays that hit.
+    unsigned intersect_packet(const Ray* rays, Hit* hits, unsigned active) const;
+    unsigned occluded_packet(const Ray* rays, const float* t_max, unsigned active) const;
     // Triangle `prim` alone, with the very test (and pack) a traversal uses, so the hit is
     // the one a traversal would find there: what the item buffer names.
     bool intersect_triangle(std::uint32_t prim, const Ray& r, Hit& hit) const;

@@ -70,6 +70,17 @@ Hit primary_hit(const Scene& scene, const Ray& ray, const ItemBuffer* ib, int x,
     return hit;
 }
 
+// The first hits of a tile's rays, kPacketWidth neighbours at a time (a row's run of
+// pixels, rows running on where the tile is narrower): the hits Scene::intersect gives,
+// the boxes tested once for a packet (core/wide_bvh_packet.h).
+void primary_packets(const Scene& scene, const std::vector<Ray>& rays, std::vector<Hit>& hits) {
+    for (std::size_t i = 0; i < rays.size(); i += kPacketWidth) {
+        const std::size_t n = std::min<std::size_t>(kPacketWidth, rays.size() - i);
+        for (std::size_t k = 0; k < n; ++k) hits[i + k] = Hit{};
+        scene.intersect_packet(&rays[i], &hits[i], (1u << n) - 1u);
+    }
+}
+
 // Sample s of every pixel of tile t, row by row. For one sample per pixel (the pixel
 // centres) each column's and each row's term of the direction is computed once
 // (Camera::across, Camera::upward): the same rays as Camera::ray, without two divisions
@@ -147,12 +158,16 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
         for (int s = 0; s < p.spp; ++s) {
             Stopwatch lap;
             tile_rays(p.camera, t, s, p.spp, rays, columns);
-            for (int y = t.y0, i = 0; y < t.y1; ++y) {
-                for (int x = t.x0; x < t.x1; ++x, ++i) {
-                    bool fell_back = false;
-                    hits[i] = primary_hit(p.scene, rays[i], p.item_buffer, x, y, fell_back);
-                    fell += fell_back;
+            if (p.item_buffer) {
+                for (int y = t.y0, i = 0; y < t.y1; ++y) {
+                    for (int x = t.x0; x < t.x1; ++x, ++i) {
+                        bool fell_back = false;
+                        hits[i] = primary_hit(p.scene, rays[i], p.item_buffer, x, y, fell_back);
+                        fell += fell_back;
+                    }
                 }
+            } else {
+                primary_packets(p.scene, rays, hits);
             }
             local.primary += n;
             primary += lap.lap();

@@ -1,5 +1,7 @@
 #include "core/scene.h"
 
+#include <array>
+
 #include <glm/geometric.hpp>
 
 #include "core/triangle4.h"
@@ -89,6 +91,54 @@ bool Scene::intersect(const Ray& r, Hit& hit) const {
         // hit.t is the traversal's t_max: intersect_object shortens it on a hit.
         return intersect_object(bounded_[slot], r, hit);
     });
+    return found;
+}
+
+unsigned Scene::intersect_object_packet(std::uint32_t object, const Ray* rays, Hit* hits,
+                                        unsigned lanes) const {
+    const Object& o = objects[object];
+    const auto* m = std::get_if<MeshRef>(&o.shape);
+    unsigned found = 0;
+    if (m) {
+        std::array<Ray, kPacketWidth> local;
+        for (unsigned rest = lanes; rest != 0; rest &= rest - 1) {
+            const unsigned lane = __builtin_ctz(rest);
+            local[lane] = object_ray(o, rays[lane]);
+        }
+        found = meshes[m->mesh].intersect_packet(local.data(), hits, lanes);
+        for (unsigned rest = found; rest != 0; rest &= rest - 1)
+            hits[__builtin_ctz(rest)].object = object;
+        return found;
+    }
+    for (; lanes != 0; lanes &= lanes - 1) {
+        const unsigned lane = __builtin_ctz(lanes);
+        if (intersect_object(object, rays[lane], hits[lane])) found |= 1u << lane;
+    }
+    return found;
+}
+
+unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) const {
+    active &= (1u << kPacketWidth) - 1u;
+    unsigned found = 0;
+    std::array<float, kPacketWidth> t_max;
+    for (unsigned rest = active; rest != 0; rest &= rest - 1) {
+        const unsigned lane = __builtin_ctz(rest);
+        for (std::uint32_t i : unbounded_)
+            if (intersect_object(i, rays[lane], hits[lane])) found |= 1u << lane;
+        t_max[lane] = hits[lane].t;
+    }
+    top_.traverse_packet<false>(
+        rays, t_max.data(), active, [&](std::uint32_t first, std::uint32_t count, unsigned lanes) {
+            unsigned hit = 0;
+            for (std::uint32_t slot = first; slot < first + count; ++slot)
+                hit |= intersect_object_packet(bounded_[slot], rays, hits, lanes);
+            for (unsigned rest = hit; rest != 0; rest &= rest - 1) {
+                const unsigned lane = __builtin_ctz(rest);
+                t_max[lane] = hits[lane].t;  // the traversal's bound follows each hit
+            }
+            found |= hit;
+            return hit;
+        });
     return found;
 }
 

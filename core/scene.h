@@ -78,6 +78,11 @@ class Scene {
 
     // Closest hit in (0, hit.t); hit.t may be preset to limit the search.
     bool intersect(const Ray& r, Hit& hit) const;
+    // The same for up to kPacketWidth neighbouring rays at once (rays[lane], hits[lane]
+    // for each bit of `active`), traced together through the objects' and the meshes'
+    // wide BVHs (core/wide_bvh_packet.h): each gets the hit intersect() gives it (of two
+    // at the very same t, either). Returns the bits of the rays that hit.
+    unsigned intersect_packet(const Ray* rays, Hit* hits, unsigned active) const;
     // Any hit in (0, t_max): the shadow feeler's question.
     bool occluded(const Ray& r, float t_max) const;
     // One object alone.
@@ -104,6 +109,9 @@ class Scene {
     Aabb object_bounds(const Object& o) const;
 
   private:
+    unsigned intersect_object_packet(std::uint32_t object, const Ray* rays, Hit* hits,
+                                     unsigned lanes) const;
+
     Accel top_;                             // over the bounded objects
     std::vector<std::uint32_t> bounded_;    // traversal slot -> object
     std::vector<std::uint32_t> unbounded_;  // planes: tested for every ray

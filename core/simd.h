@@ -36,6 +36,8 @@ inline constexpr int kBvhWidth = 8;
 #else
 inline constexpr int kBvhWidth = 4;
 #endif
+// Rays traced together (core/wide_bvh_packet.h): one to a lane of the BVH's width.
+inline constexpr int kPacketWidth = kBvhWidth;
 
 template <class V>
 V splat(float x) {

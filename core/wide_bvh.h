@@ -54,6 +54,13 @@ class WideBvh {
     bool traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const;
     template <bool kAnyHit, class HitPrim>
     bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const;
+    // Up to N rays together (core/wide_bvh_packet.h): rays[lane] for each bit of `active`,
+    // each with its own t_max[lane]. `hit_leaf(first_slot, count, lanes)` tests the leaf
+    // for the rays in `lanes` (a bit each) and returns the bits of those that hit it,
+    // having shortened their t_max; a ray that hits is done if kAnyHit. Every ray gets
+    // the answer traverse_leaves gives it alone (of two hits at the very same t, either).
+    template <bool kAnyHit, class HitLeaf>
+    void traverse_packet(const Ray* rays, float* t_max, unsigned active, HitLeaf&& hit_leaf) const;
     template <class F>
     void for_each_leaf(F&& f) const {
         for (const Node& n : nodes_)

@@ -58,6 +58,18 @@ class Structure {
     virtual std::size_t memory_bytes() const = 0;
     virtual Result intersect(const rt::Ray& ray, float t_max) const = 0;
     virtual bool occluded(const rt::Ray& ray, float t_max) const = 0;
+    // A structure that traces packets (`packets()`) gets the rays kPacketWidth at a
+    // time: rays[0, count) with their t_max, answers into out[0, count).
+    virtual bool packets() const { return false; }
+    virtual void intersect_packet(const rt::Ray* rays, const float* t_max, int count,
+                                  Result* out) const {
+        for (int i = 0; i < count; ++i) out[i] = intersect(rays[i], t_max[i]);
+    }
+    virtual void occluded_packet(const rt::Ray* rays, const float* t_max, int count,
+                                 Result* out) const {
+        for (int i = 0; i < count; ++i)
+            out[i].t = occluded(rays[i], t_max[i]) ? 0.0f : rt::kInfinity;
+    }
     // A structure that answers a whole set at once (the GPU): answers every stride-th ray
     // of `set` and returns the seconds the tracing itself took (the rays already up, the
     // answers not yet read back). Nothing for those that answer a ray at a time.
@@ -67,9 +79,13 @@ class Structure {
     }
 };
 
-// Builds on `threads` threads, as Embree's device does with its own.
-std::unique_ptr<Structure> make_ours(rt::AccelKind kind, int threads);
-std::unique_ptr<Structure> make_embree(int threads);  // nullptr when built without Embree
+// Builds on `threads` threads, as Embree's device does with its own. `packets`: traces
+// kPacketWidth rays at a time (our wide BVH's packet traversal; Embree's rtcIntersect8 /
+// rtcOccluded8, or 4 where our packets are 4 wide), named "bvh-packets",
+// "embree-packets".
+std::unique_ptr<Structure> make_ours(rt::AccelKind kind, int threads, bool packets = false);
+std::unique_ptr<Structure> make_embree(int threads,
+                                       bool packets = false);  // nullptr without Embree
 bool have_embree();
 // The GPU tracer's traversal (app/gl/gpu_tracer.h) on a headless context of `backend`:
 // throws rt::Error where there is no context or no compute shaders.

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <numbers>
@@ -65,28 +66,33 @@ std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMe
     sets[1].name = "shadow";
     sets[1].occlusion = true;
     sets[2].name = "secondary";
+    std::vector<vec3> points;  // the hits, offset off their surfaces
     for (std::size_t i = 0; i < primary_hits.size(); ++i) {
         const Result& h = primary_hits[i];
         if (!h.hit()) continue;
         const rt::Ray& r = sets[0].rays[i];
         vec3 n = glm::normalize(mesh.face_normal(h.prim));
         if (glm::dot(n, r.dir) > 0.0f) n = -n;
-        const vec3 p = rt::offset_ray_origin(r.at(h.t), n);
-        for (const rt::Light& light : lights) {
+        points.push_back(rt::offset_ray_origin(r.at(h.t), n));
+        sets[2].rays.push_back({points.back(), cosine_direction(n, static_cast<std::uint32_t>(i))});
+        sets[2].t_max.push_back(rt::kInfinity);
+    }
+    // Light by light, in the pixels' order: neighbouring feelers go to one light, as a
+    // renderer's packets of them would.
+    for (const rt::Light& light : lights) {
+        for (const vec3& p : points) {
             vec3 dir;
             const float t_max = light.feeler(p, dir);
             sets[1].rays.push_back({p, dir});
             sets[1].t_max.push_back(t_max);
         }
-        sets[2].rays.push_back({p, cosine_direction(n, static_cast<std::uint32_t>(i))});
-        sets[2].t_max.push_back(rt::kInfinity);
     }
     return sets;
 }
 
 void parallel_for(std::size_t count, int threads,
                   const std::function<void(std::size_t, std::size_t)>& body) {
-    constexpr std::size_t kChunk = 4096;
+    constexpr std::size_t kChunk = 4096;  // a multiple of kPacketWidth: packets stay whole
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
         for (std::size_t begin; (begin = next.fetch_add(kChunk)) < count;)
@@ -123,15 +129,37 @@ class Ours : public Structure {
         return mesh_.occluded(ray, t_max);
     }
 
-  private:
+  protected:
     rt::AccelKind kind_;
     int threads_;
     rt::TriangleMesh mesh_;
 };
 
+// The same structure, its rays traced kPacketWidth at a time (core/wide_bvh_packet.h).
+class OursPackets : public Ours {
+  public:
+    using Ours::Ours;
+    std::string name() const override { return std::string(rt::accel_name(kind_)) + "-packets"; }
+    bool packets() const override { return true; }
+    void intersect_packet(const rt::Ray* rays, const float* t_max, int count,
+                          Result* out) const override {
+        std::array<rt::Hit, rt::kPacketWidth> hits;
+        for (int i = 0; i < count; ++i) hits[i].t = t_max[i];
+        const unsigned found = mesh_.intersect_packet(rays, hits.data(), (1u << count) - 1u);
+        for (int i = 0; i < count; ++i)
+            out[i] = (found >> i) & 1u ? Result{hits[i].t, hits[i].prim} : Result{};
+    }
+    void occluded_packet(const rt::Ray* rays, const float* t_max, int count,
+                         Result* out) const override {
+        const unsigned blocked = mesh_.occluded_packet(rays, t_max, (1u << count) - 1u);
+        for (int i = 0; i < count; ++i) out[i].t = (blocked >> i) & 1u ? 0.0f : rt::kInfinity;
+    }
+};
+
 }  // namespace
 
-std::unique_ptr<Structure> make_ours(rt::AccelKind kind, int threads) {
+std::unique_ptr<Structure> make_ours(rt::AccelKind kind, int threads, bool packets) {
+    if (packets) return std::make_unique<OursPackets>(kind, threads);
     return std::make_unique<Ours>(kind, threads);
 }
 

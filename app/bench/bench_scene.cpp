@@ -79,34 +79,40 @@ bool check(const std::vector<Entry>& entries, const std::vector<RaySet>& sets,
 
 void print_table(const std::vector<Entry>& entries, const std::vector<RaySet>& sets,
                  std::size_t triangles, nlohmann::json& report) {
-    const Entry* embree = nullptr;
-    for (const Entry& e : entries)
+    const Entry *embree = nullptr, *embree_packets = nullptr;
+    for (const Entry& e : entries) {
         if (e.structure->name() == "embree") embree = &e;
-    std::printf("%-8s %10s %12s %11s", "", "build s", "Mtri/s", "memory MB");
+        if (e.structure->name() == "embree-packets") embree_packets = &e;
+    }
+    std::printf("%-14s %10s %12s %11s", "", "build s", "Mtri/s", "memory MB");
     for (const RaySet& set : sets) std::printf(" %10s Mrays/s", set.name.c_str());
     std::printf("\n");
     for (const Entry& e : entries) {
+        // Packets against Embree's packets, single rays against its single rays.
+        const Entry* ref = e.structure->packets() && embree_packets ? embree_packets : embree;
         nlohmann::json j = {
             {"build_seconds", e.build_seconds},
             {"build_mtris_per_s", static_cast<double>(triangles) / e.build_seconds * 1e-6},
             {"memory_bytes", e.structure->memory_bytes()}};
-        std::printf("%-8s %10.4f %12.2f %11.2f", e.structure->name().c_str(), e.build_seconds,
+        std::printf("%-14s %10.4f %12.2f %11.2f", e.structure->name().c_str(), e.build_seconds,
                     static_cast<double>(triangles) / e.build_seconds * 1e-6,
                     static_cast<double>(e.structure->memory_bytes()) / 1e6);
         for (std::size_t s = 0; s < sets.size(); ++s) {
             j["rays"][sets[s].name] = to_json(e.timing[s]);
-            const double ratio =
-                embree ? embree->timing[s].mrays_per_s / e.timing[s].mrays_per_s : 0.0;
-            if (embree) j["rays"][sets[s].name]["embree_time_ratio"] = ratio;
+            const double ratio = ref ? ref->timing[s].mrays_per_s / e.timing[s].mrays_per_s : 0.0;
+            if (ref) j["rays"][sets[s].name]["embree_time_ratio"] = ratio;
             std::printf(" %18.2f", e.timing[s].mrays_per_s);
-            if (embree && &e != embree) std::printf(" (%4.2fx)", ratio);
+            if (ref && &e != ref) std::printf(" (%4.2fx)", ratio);
         }
         if (e.brute()) std::printf("  [every %zu-th ray]", e.timing[0].stride);
         std::printf("\n");
         report["structures"][e.structure->name()] = j;
     }
     if (embree)
-        std::printf("(N.NNx): time per ray relative to Embree's, on the same rays and threads\n");
+        std::printf(
+            "(N.NNx): time per ray relative to Embree's (rtcIntersect1/rtcOccluded1; for -packets, "
+            "Embree's %d-ray packets), on the same rays and threads\n",
+            rt::kPacketWidth);
 }
 
 // "sphere:N": a unit sphere tessellated into about N triangles, seen from the front and
@@ -252,6 +258,8 @@ int run_scene(const SceneBenchOptions& o) {
          {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2, rt::AccelKind::kBvh})
         entries.emplace_back(make_ours(k, o.measure.threads));
     if (auto embree = make_embree(o.measure.threads)) entries.emplace_back(std::move(embree));
+    entries.emplace_back(make_ours(rt::AccelKind::kBvh, o.measure.threads, true));
+    if (auto embree = make_embree(o.measure.threads, true)) entries.emplace_back(std::move(embree));
     if (o.gpu) entries.emplace_back(make_gpu(o.gl));
     // The BVH makes the ray sets; a reference checks every answer, so both always run.
     const std::string reference = have_embree() ? "embree" : "brute";

@@ -4,11 +4,15 @@
 #ifdef RTVIEW_HAVE_EMBREE
 #include <embree3/rtcore.h>
 
+#include "core/simd.h"
+
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace rt::bench {
 namespace {
@@ -77,7 +81,7 @@ class Embree : public Structure {
         return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
     }
 
-  private:
+  protected:
     static void set_ray(RTCRay& r, const rt::Ray& ray, float t_max) {
         r.org_x = ray.origin.x;
         r.org_y = ray.origin.y;
@@ -97,9 +101,79 @@ class Embree : public Structure {
     long long bytes_before_build_ = 0;
 };
 
+// The same scene, the rays handed over kPacketWidth at a time: rtcIntersect8 /
+// rtcOccluded8 (rtcIntersect4 / rtcOccluded4 where our packets are 4 wide).
+class EmbreePackets : public Embree {
+  public:
+    using Embree::Embree;
+    std::string name() const override { return "embree-packets"; }
+    bool packets() const override { return true; }
+
+    static constexpr bool kEight = rt::kPacketWidth == 8;
+    using RayHitN = std::conditional_t<kEight, RTCRayHit8, RTCRayHit4>;
+    using RayN = std::conditional_t<kEight, RTCRay8, RTCRay4>;
+    void intersect_packet(const rt::Ray* rays, const float* t_max, int count,
+                          Result* out) const override {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        alignas(64) int valid[rt::kPacketWidth];
+        alignas(64) RayHitN rh{};
+        fill(rh.ray, rays, t_max, count, valid);
+        for (int i = 0; i < rt::kPacketWidth; ++i) rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+        intersect_n(valid, &context, &rh);
+        for (int i = 0; i < count; ++i)
+            out[i] = rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID
+                         ? Result{}
+                         : Result{rh.ray.tfar[i], rh.hit.primID[i]};
+    }
+    void occluded_packet(const rt::Ray* rays, const float* t_max, int count,
+                         Result* out) const override {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        alignas(64) int valid[rt::kPacketWidth];
+        alignas(64) RayN r{};
+        fill(r, rays, t_max, count, valid);
+        occluded_n(valid, &context, &r);
+        for (int i = 0; i < count; ++i) out[i].t = r.tfar[i] < 0.0f ? 0.0f : rt::kInfinity;
+    }
+
+  private:
+    void intersect_n(const int* valid, RTCIntersectContext* c, RTCRayHit8* rh) const {
+        rtcIntersect8(valid, scene_, c, rh);
+    }
+    void intersect_n(const int* valid, RTCIntersectContext* c, RTCRayHit4* rh) const {
+        rtcIntersect4(valid, scene_, c, rh);
+    }
+    void occluded_n(const int* valid, RTCIntersectContext* c, RTCRay8* r) const {
+        rtcOccluded8(valid, scene_, c, r);
+    }
+    void occluded_n(const int* valid, RTCIntersectContext* c, RTCRay4* r) const {
+        rtcOccluded4(valid, scene_, c, r);
+    }
+    static void fill(RayN& r, const rt::Ray* rays, const float* t_max, int count, int* valid) {
+        for (int i = 0; i < rt::kPacketWidth; ++i) {
+            valid[i] = i < count ? -1 : 0;
+            const rt::Ray& ray = rays[std::min(i, count - 1)];
+            r.org_x[i] = ray.origin.x;
+            r.org_y[i] = ray.origin.y;
+            r.org_z[i] = ray.origin.z;
+            r.dir_x[i] = ray.dir.x;
+            r.dir_y[i] = ray.dir.y;
+            r.dir_z[i] = ray.dir.z;
+            r.tnear[i] = 0.0f;
+            r.tfar[i] = t_max[std::min(i, count - 1)];
+            r.mask[i] = ~0u;
+            r.flags[i] = 0;
+        }
+    }
+};
+
 }  // namespace
 
-std::unique_ptr<Structure> make_embree(int threads) { return std::make_unique<Embree>(threads); }
+std::unique_ptr<Structure> make_embree(int threads, bool packets) {
+    if (packets) return std::make_unique<EmbreePackets>(threads);
+    return std::make_unique<Embree>(threads);
+}
 bool have_embree() { return true; }
 
 }  // namespace rt::bench
@@ -107,7 +181,7 @@ bool have_embree() { return true; }
 #else
 
 namespace rt::bench {
-std::unique_ptr<Structure> make_embree(int) { return nullptr; }
+std::unique_ptr<Structure> make_embree(int, bool) { return nullptr; }
 bool have_embree() { return false; }
 }  // namespace rt::bench
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "core/simd.h"
 #include "core/stopwatch.h"
 
 namespace rt::bench {
@@ -44,6 +45,18 @@ SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
     }
     const auto pass = [&] {
         parallel_for(count, options.threads, [&](std::size_t begin, std::size_t end) {
+            if (s.packets() && stride == 1) {  // chunks are whole packets but the last
+                for (std::size_t i = begin; i < end; i += rt::kPacketWidth) {
+                    const int n =
+                        static_cast<int>(std::min<std::size_t>(rt::kPacketWidth, end - i));
+                    if (set.occlusion) {
+                        s.occluded_packet(&set.rays[i], &set.t_max[i], n, &answers[i]);
+                    } else {
+                        s.intersect_packet(&set.rays[i], &set.t_max[i], n, &answers[i]);
+                    }
+                }
+                return;
+            }
             for (std::size_t i = begin; i < end; ++i) {
                 const std::size_t r = i * stride;
                 if (set.occlusion) {

@@ -1,0 +1,190 @@
+#pragma once
+// N coherent rays through the wide BVH together (Wald, Slusallek, Benthin and Wagner,
+// "Interactive Rendering with Coherent Ray Tracing", 2001; the interval test of Boulos
+// et al., "Geometric and Arithmetic Culling Methods for Entire Ray Packets", 2006).
+// An interior node is tested once for the whole packet: one slab test over its N
+// children with interval arithmetic on the rays' origins and inverse directions, which
+// bounds every ray's own entry and exit from below and above. A leaf the packet enters
+// is then tested against each ray's own box test (the rays as the lanes), and only the
+// rays that enter it test its triangles. Each ray ends with the hit it would find alone.
+//
+// Rays whose direction signs differ on some axis, or with a zero component, make no
+// useful interval: such a packet is traced a ray at a time (WideBvh::traverse_leaves).
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/wide_bvh.h"
+
+namespace rt {
+namespace detail {
+
+template <int N>
+struct PacketBoxes {
+    using Float = typename Lanes<N>::Float;
+    // The interval over the rays, each splat over the children: the origin a near plane
+    // is measured from (the largest coordinate where the rays go up the axis, else the
+    // smallest), the one a far plane is, and the inverse directions' range.
+    Float entry_origin[3], exit_origin[3], inv_lo[3], inv_hi[3];
+    // The rays themselves, a lane each, for the leaves' test.
+    Float inv[3], origin[3];
+    int near[3], far[3];
+
+    // False where the interval says nothing useful: then trace the rays alone.
+    bool set(const Ray* rays, unsigned active) {
+        const int first = __builtin_ctz(active);
+        for (int a = 0; a < 3; ++a) {
+            const bool up = rays[first].dir[a] > 0.0f;
+            float o_lo = kInfinity, o_hi = -kInfinity, i_lo = kInfinity, i_hi = -kInfinity;
+            for (int lane = 0; lane < N; ++lane) {
+                const Ray& r = rays[(active >> lane) & 1u ? lane : first];
+                const float inv_a = 1.0f / r.dir[a];
+                if (!std::isfinite(inv_a) || (r.dir[a] > 0.0f) != up || !std::isfinite(r.origin[a]))
+                    return false;
+                inv[a][lane] = inv_a;
+                origin[a][lane] = r.origin[a];
+                o_lo = std::min(o_lo, r.origin[a]);
+                o_hi = std::max(o_hi, r.origin[a]);
+                i_lo = std::min(i_lo, inv_a);
+                i_hi = std::max(i_hi, inv_a);
+            }
+            entry_origin[a] = splat<Float>(up ? o_hi : o_lo);
+            exit_origin[a] = splat<Float>(up ? o_lo : o_hi);
+            inv_lo[a] = splat<Float>(i_lo);
+            inv_hi[a] = splat<Float>(i_hi);
+            near[a] = up ? a : a + 3;
+            far[a] = up ? a + 3 : a;
+        }
+        return true;
+    }
+
+    // A bit per child that some ray may enter in (0, t_max), t_max the largest of the
+    // rays', and a lower bound on where each child is entered. Of the interval product
+    // (plane - origin) * inverse, the smallest for a near plane is the smallest
+    // difference times the smallest inverse if that difference is positive, else times
+    // the largest; the largest for a far plane, the other way round. Rounding to nearest
+    // is monotonic, so the bounds hold for every ray's own rounded slab test.
+    unsigned test(const WideBvhNode<N>& n, float t_max, Float& t_enter) const {
+        const Float zero = splat<Float>(0.0f);
+        const auto entry = [&](int a) {
+            const Float d = n.bounds[near[a]] - entry_origin[a];
+            return d * (d >= zero ? inv_lo[a] : inv_hi[a]);
+        };
+        const auto exit = [&](int a) {
+            const Float d = n.bounds[far[a]] - exit_origin[a];
+            return d * (d >= zero ? inv_hi[a] : inv_lo[a]);
+        };
+        t_enter = vmax(vmax(entry(0), entry(1)), vmax(entry(2), zero));
+        const Float t_leave =
+            vmin(vmin(exit(0), exit(1)), vmin(exit(2), splat<Float>(t_max))) * 1.00000024f;
+        return bits(t_enter <= t_leave);
+    }
+
+    // A bit per ray that enters child `lane` of `n` within its own (0, t_max): the single
+    // ray's test (BoxRay::test), with the rays as the lanes.
+    unsigned rays_entering(const WideBvhNode<N>& n, int lane, const Float& t_max) const {
+        const auto plane = [&](int index, int a) {
+            return (splat<Float>(n.bounds[index][lane]) - origin[a]) * inv[a];
+        };
+        const Float t_enter = vmax(vmax(plane(near[0], 0), plane(near[1], 1)),
+                                   vmax(plane(near[2], 2), splat<Float>(0.0f)));
+        const Float t_leave =
+            vmin(vmin(plane(far[0], 0), plane(far[1], 1)), vmin(plane(far[2], 2), t_max)) *
+            1.00000024f;
+        return bits(t_enter <= t_leave);
+    }
+};
+
+}  // namespace detail
+
+template <int N>
+template <bool kAnyHit, class HitLeaf>
+void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
+                                 HitLeaf&& hit_leaf) const {
+    using Float = typename Lanes<N>::Float;
+    active &= (1u << N) - 1u;
+    for (unsigned m = active; m != 0; m &= m - 1) {
+        const int lane = __builtin_ctz(m);
+        if (!finite_ray(rays[lane])) active &= ~(1u << lane);
+    }
+    if (nodes_.empty() || active == 0) return;
+    detail::PacketBoxes<N> boxes;
+    if (!boxes.set(rays, active)) {
+        for (; active != 0; active &= active - 1) {
+            const unsigned lane = __builtin_ctz(active);
+            traverse_leaves<kAnyHit>(rays[lane], t_max[lane],
+                                     [&](std::uint32_t first, std::uint32_t count, float&) {
+                                         return hit_leaf(first, count, 1u << lane) != 0;
+                                     });
+        }
+        return;
+    }
+    Float limits;  // the rays' t_max as lanes; inactive ones -inf, so no box is entered
+    float largest = -kInfinity;
+    const auto update_limits = [&] {
+        largest = -kInfinity;
+        for (int lane = 0; lane < N; ++lane) {
+            limits[lane] = (active >> lane) & 1u ? t_max[lane] : -kInfinity;
+            largest = std::max(largest, limits[lane]);
+        }
+    };
+    update_limits();
+    struct Pending {
+        std::uint32_t child, count;  // count 0: a node
+        std::uint32_t parent, lane;  // where a leaf's box is, for the rays' own test
+        float t_enter;               // a lower bound for every ray
+    };
+    std::array<Pending, (N - 1) * Bvh::kMaxDepth + N> stack;
+    int top = 0;
+    Pending current{0, 0, 0, 0, 0.0f};
+    for (;;) {
+        bool missed = false;
+        while (current.count == 0) {
+            const Node& node = nodes_[current.child];
+            Float t_enter;
+            unsigned mask = boxes.test(node, largest, t_enter);
+            if (mask == 0) {
+                missed = true;
+                break;
+            }
+            const std::uint32_t parent = current.child;
+            int lane = __builtin_ctz(mask);
+            current = {node.child[lane], node.count[lane], parent, static_cast<std::uint32_t>(lane),
+                       t_enter[lane]};
+            const int first = top;
+            for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
+                lane = __builtin_ctz(mask);
+                Pending other{node.child[lane], node.count[lane], parent,
+                              static_cast<std::uint32_t>(lane), t_enter[lane]};
+                if (!kAnyHit && other.t_enter < current.t_enter) std::swap(other, current);
+                int i = top++;
+                if constexpr (!kAnyHit)
+                    for (; i > first && stack[i - 1].t_enter < other.t_enter; --i)
+                        stack[i] = stack[i - 1];
+                stack[i] = other;
+            }
+        }
+        if (!missed) {
+            const unsigned entering = boxes.rays_entering(nodes_[current.parent],
+                                                          static_cast<int>(current.lane), limits) &
+                                      active;
+            if (entering != 0) {
+                const unsigned hit = hit_leaf(current.child, current.count, entering);
+                if (hit != 0) {
+                    if constexpr (kAnyHit) {
+                        active &= ~hit;
+                        if (active == 0) return;
+                    }
+                    update_limits();
+                }
+            }
+        }
+        do {
+            if (top == 0) return;
+            current = stack[--top];
+        } while (current.t_enter >= largest);
+    }
+}
+
+}  // namespace rt

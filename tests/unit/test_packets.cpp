@@ -1,0 +1,196 @@
+// Rays traced as packets (core/wide_bvh_packet.h) must get what each gets alone: the same
+// hit or miss, at the very same t, on the same triangle (or on one met at that very t).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <random>
+
+#include <glm/geometric.hpp>
+
+#include "core/mesh.h"
+#include "core/scene.h"
+#include "core/tessellate.h"
+#include "test_util.h"
+
+namespace rt {
+namespace {
+
+constexpr int kW = kPacketWidth;
+using Packet = std::array<Ray, kW>;
+
+vec3 random_in(std::mt19937& rng, float extent) {
+    std::uniform_real_distribution<float> u(-extent, extent);
+    return {u(rng), u(rng), u(rng)};
+}
+
+// Closed surfaces (shared edges: ties) and a soup of loose triangles (deep overlaps).
+TriangleMesh test_mesh(int which, AccelKind kind) {
+    TriangleMesh mesh;
+    if (which == 0) {
+        mesh = tessellate_unit_sphere(64);
+        for (vec3& p : mesh.positions) p = 3.0f * p + vec3(0.5f, -0.25f, 0.0f);
+    } else {
+        std::mt19937 rng(11);
+        for (int i = 0; i < 2000; ++i) {
+            const vec3 centre = random_in(rng, 4.0f);
+            const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+            for (int k = 0; k < 3; ++k)
+                mesh.positions.push_back(centre + 0.4f * random_in(rng, 1.0f));
+            mesh.triangles.push_back({base, base + 1, base + 2});
+        }
+    }
+    mesh.build(kind);
+    return mesh;
+}
+
+// Packets of every kind a renderer makes, and some it should not: a camera's neighbouring
+// pixels (one origin), feelers from scattered points to one light (one end), rays whose
+// signs differ (traced one at a time), rays along an axis (a zero component), and rays
+// with no direction at all.
+Packet make_packet(std::mt19937& rng, int kind) {
+    Packet p;
+    const vec3 eye = vec3(0.0f, 0.0f, 9.0f) + random_in(rng, 2.0f);
+    const vec3 aim = random_in(rng, 2.0f) - eye;
+    const vec3 light = random_in(rng, 9.0f);
+    for (int lane = 0; lane < kW; ++lane) {
+        const vec3 jitter = random_in(rng, kind == 1 ? 2.0f : 0.02f);
+        switch (kind) {
+            case 0:
+                p[lane] = {eye, aim + jitter};
+                break;
+            case 1:
+                p[lane] = {light + jitter * 2.0f, -light + jitter};
+                break;
+            case 2:
+                p[lane] = {random_in(rng, 8.0f), random_in(rng, 1.0f)};
+                break;
+            case 3:
+                p[lane] = {eye + jitter * 50.0f, vec3(0.0f, 0.0f, -1.0f)};
+                break;
+            default:
+                p[lane] = {eye, lane == 3 ? vec3(0.0f) : aim + jitter};
+                break;
+        }
+    }
+    return p;
+}
+
+class PacketTest : public ::testing::TestWithParam<AccelKind> {};
+
+TEST_P(PacketTest, EveryRayGetsTheHitItGetsAlone) {
+    std::mt19937 rng(3);
+    int hits = 0, packed = 0;
+    for (int which = 0; which < 2; ++which) {
+        const TriangleMesh mesh = test_mesh(which, GetParam());
+        for (int n = 0; n < 1500; ++n) {
+            const Packet rays = make_packet(rng, n % 5);
+            const unsigned active = n % 7 == 0 ? (rng() & ((1u << kW) - 1u)) : (1u << kW) - 1u;
+            std::array<Hit, kW> alone, together;
+            for (int lane = 0; lane < kW; ++lane) {
+                const float limit = n % 3 == 0 ? 4.0f + static_cast<float>(lane) : kInfinity;
+                alone[lane].t = together[lane].t = limit;
+                together[lane].prim = 12345;  // left as it is where the ray misses
+            }
+            const unsigned found = mesh.intersect_packet(rays.data(), together.data(), active);
+            ++packed;
+            for (int lane = 0; lane < kW; ++lane) {
+                const bool on = (active >> lane) & 1u;
+                const bool hit_alone = on && mesh.intersect(rays[lane], alone[lane]);
+                ASSERT_EQ(((found >> lane) & 1u) != 0, hit_alone)
+                    << "packet " << n << " lane " << lane;
+                if (!hit_alone) {
+                    EXPECT_EQ(together[lane].prim, 12345u);
+                    EXPECT_EQ(together[lane].t, alone[lane].t);
+                    continue;
+                }
+                ++hits;
+                ASSERT_EQ(together[lane].t, alone[lane].t) << "packet " << n << " lane " << lane;
+                if (together[lane].prim != alone[lane].prim) {  // only a tie may differ
+                    Hit other;
+                    ASSERT_TRUE(mesh.intersect_triangle(together[lane].prim, rays[lane], other));
+                    EXPECT_EQ(other.t, alone[lane].t) << "packet " << n << " lane " << lane;
+                } else {
+                    EXPECT_EQ(together[lane].b1, alone[lane].b1);
+                    EXPECT_EQ(together[lane].b2, alone[lane].b2);
+                }
+            }
+        }
+    }
+    EXPECT_GT(hits, packed * kW / 4);  // the test means something only if many rays hit
+}
+
+TEST_P(PacketTest, EveryFeelerIsBlockedExactlyWhenItIsAlone) {
+    std::mt19937 rng(5);
+    int blocked = 0, total = 0;
+    for (int which = 0; which < 2; ++which) {
+        const TriangleMesh mesh = test_mesh(which, GetParam());
+        for (int n = 0; n < 1500; ++n) {
+            const Packet rays = make_packet(rng, n % 5);
+            const unsigned active = n % 7 == 0 ? (rng() & ((1u << kW) - 1u)) : (1u << kW) - 1u;
+            std::array<float, kW> t_max;
+            for (int lane = 0; lane < kW; ++lane)
+                t_max[lane] = n % 2 ? 0.5f + static_cast<float>(lane) : kInfinity;
+            const unsigned result = mesh.occluded_packet(rays.data(), t_max.data(), active);
+            for (int lane = 0; lane < kW; ++lane) {
+                const bool on = (active >> lane) & 1u;
+                const bool alone = on && mesh.occluded(rays[lane], t_max[lane]);
+                ASSERT_EQ(((result >> lane) & 1u) != 0, alone)
+                    << "packet " << n << " lane " << lane;
+                blocked += alone;
+                total += on;
+            }
+        }
+    }
+    EXPECT_GT(blocked, total / 5);
+    EXPECT_LT(blocked, total * 4 / 5);
+}
+
+// A whole scene's packets (planes, spheres, triangles, meshes under transforms, through
+// the objects' BVH and each mesh's): each camera ray in a packet of its row's neighbours
+// finds what Scene::intersect finds for it alone.
+TEST(ScenePackets, EveryPixelGetsTheHitItGetsAlone) {
+    for (const char* name :
+         {"whitted.json", "cornell.json", "textured.json", "many_spheres.json"}) {
+        const Scene scene(test::shipped_scene(name, 160, 90));
+        const Camera& camera = scene.camera;
+        int hits = 0;
+        for (int y = 0; y < camera.rows; ++y) {
+            for (int x0 = 0; x0 < camera.cols; x0 += kW) {
+                std::array<Ray, kW> rays;
+                std::array<Hit, kW> together;
+                const int n = std::min(kW, camera.cols - x0);
+                for (int k = 0; k < n; ++k) rays[k] = camera.ray(x0 + k, y);
+                const unsigned active = (1u << n) - 1u;
+                const unsigned found = scene.intersect_packet(rays.data(), together.data(), active);
+                for (int k = 0; k < n; ++k) {
+                    Hit alone;
+                    const bool hit = scene.intersect(rays[k], alone);
+                    const std::string where = std::string(name) + " pixel " +
+                                              std::to_string(x0 + k) + "," + std::to_string(y);
+                    ASSERT_EQ(((found >> k) & 1u) != 0, hit) << where;
+                    ASSERT_EQ(together[k].t, alone.t) << where;
+                    if (!hit) continue;
+                    ++hits;
+                    ASSERT_EQ(together[k].object, alone.object) << where;
+                    if (together[k].prim != alone.prim) {
+                        Hit other;
+                        ASSERT_TRUE(scene.intersect_primitive(together[k].object, together[k].prim,
+                                                              rays[k], other));
+                        EXPECT_EQ(other.t, alone.t) << where;
+                    }
+                }
+            }
+        }
+        EXPECT_GT(hits, camera.rows * camera.cols / 4) << name;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryKind, PacketTest,
+                         ::testing::Values(AccelKind::kBvh, AccelKind::kBvh2, AccelKind::kGrid,
+                                           AccelKind::kBrute),
+                         [](const auto& param_info) {
+                             return std::string(accel_name(param_info.param));
+                         });
+
+}  // namespace
+}  // namespace rt
