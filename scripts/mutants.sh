@@ -221,6 +221,12 @@ mutant shared-ids-written-by-lines app/gl/raster_renderer.cpp \
 mutant tile-rays-off-centre core/renderer.cpp \
     'camera.across(static_cast<float>(x) + 0.5f)' 'camera.across(static_cast<float>(x) + 0.49f)' \
     rt_tests $(unit 'Render.EveryPixelIsItsCentresRayTracedAlone')
+mutant packet-interval-takes-one-inverse core/wide_bvh_packet.h \
+    'return d * (d >= zero ? inv_lo[a] : inv_hi[a]);' 'return d * inv_hi[a];' \
+    rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant packet-mesh-sees-world-rays core/scene.cpp \
+    'intersect_packet(local.data(), hits, lanes)' 'intersect_packet(rays, hits, lanes)' \
+    rt_tests $(unit 'ScenePackets.*')
 mutant item-buffer-interior-misses-a-column core/item_buffer.h \
     'for (int dx = 0; dx < 3; ++dx)' 'for (int dx = 0; dx < 2; ++dx)' \
     rt_tests $(unit 'ItemBuffer.Interior*')

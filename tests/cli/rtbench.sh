@@ -11,7 +11,7 @@ check() { cases=$((cases + 1)); local what=$1; shift; if "$@"; then echo "ok   $
 "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --json "$out/teapot.json" >"$out/teapot.log" 2>&1
 check "structures agree on the teapot (exit 0)" test $? -eq 0
 check "  ... and say so" grep -q "every structure agrees" "$out/teapot.log"
-for key in brute grid bvh2 bvh build_seconds memory_bytes primary shadow secondary mrays_per_s checks; do
+for key in brute grid bvh2 bvh bvh-packets build_seconds memory_bytes primary shadow secondary mrays_per_s checks; do
     check "  ... JSON has \"$key\"" grep -q "\"$key\"" "$out/teapot.json"
 done
 RTBENCH_FAULT=grid "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only grid,brute >"$out/fault.log" 2>&1
@@ -19,6 +19,8 @@ check "a structure giving wrong answers makes rtbench fail (exit 1)" test $? -eq
 check "  ... naming it" grep -q "WRONG: grid" "$out/fault.log"
 RTBENCH_FAULT=bvh "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only bvh >"$out/fault_bvh.log" 2>&1
 check "  ... the wide BVH too" grep -q "WRONG: bvh" "$out/fault_bvh.log"
+RTBENCH_FAULT=bvh-packets "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only bvh-packets >"$out/fault_packets.log" 2>&1
+check "  ... and its packets" grep -q "WRONG: bvh-packets" "$out/fault_packets.log"
 
 # The GPU tracer's traversal (a compute shader) on the same rays, on both contexts.
 for gl in egl osmesa; do
