@@ -2,11 +2,14 @@
 // N coherent rays through the wide BVH together (Wald, Slusallek, Benthin and Wagner,
 // "Interactive Rendering with Coherent Ray Tracing", 2001; the interval test of Boulos
 // et al., "Geometric and Arithmetic Culling Methods for Entire Ray Packets", 2006).
-// An interior node is tested once for the whole packet: one slab test over its N
-// children with interval arithmetic on the rays' origins and inverse directions, which
-// bounds every ray's own entry and exit from below and above. A leaf the packet enters
-// is then tested against each ray's own box test (the rays as the lanes), and only the
-// rays that enter it test its triangles. Each ray ends with the hit it would find alone.
+// A node is tested once for the whole packet: one slab test over its N children with
+// interval arithmetic on the rays' origins and inverse directions, which bounds every
+// ray's own entry and exit from below and above. Each child it admits is then tested
+// against each ray's own box test (the rays as the lanes), and the child is walked for
+// the rays that enter it only: its triangles are tested by exactly the rays that would
+// test them alone. Each ray ends with the hit it would find alone. (Where the rays share
+// their origin, a camera's, the interval is tight and the rays' own test is left to the
+// leaves.)
 //
 // Rays whose direction signs differ on some axis, or with a zero component, make no
 // useful interval: such a packet is traced a ray at a time (WideBvh::traverse_leaves).
@@ -30,9 +33,11 @@ struct PacketBoxes {
     // The rays themselves, a lane each, for the leaves' test.
     Float inv[3], origin[3];
     int near[3], far[3];
+    bool one_origin = true;  // the rays share their origin (a camera's): the interval is tight
 
     // False where the interval says nothing useful: then trace the rays alone.
     bool set(const Ray* rays, unsigned active) {
+        one_origin = true;
         const int first = __builtin_ctz(active);
         for (int a = 0; a < 3; ++a) {
             const bool up = rays[first].dir[a] > 0.0f;
@@ -49,6 +54,7 @@ struct PacketBoxes {
                 i_lo = std::min(i_lo, inv_a);
                 i_hi = std::max(i_hi, inv_a);
             }
+            one_origin = one_origin && o_lo == o_hi;
             entry_origin[a] = splat<Float>(up ? o_hi : o_lo);
             exit_origin[a] = splat<Float>(up ? o_lo : o_hi);
             inv_lo[a] = splat<Float>(i_lo);
@@ -132,31 +138,40 @@ void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
     update_limits();
     struct Pending {
         std::uint32_t child, count;  // count 0: a node
-        std::uint32_t parent, lane;  // where a leaf's box is, for the rays' own test
-        float t_enter;               // a lower bound for every ray
+        unsigned rays;               // the rays that enter it, each by its own test
+        float t_enter;               // a lower bound for each of them
     };
     std::array<Pending, (N - 1) * Bvh::kMaxDepth + N> stack;
     int top = 0;
-    Pending current{0, 0, 0, 0, 0.0f};
+    Pending current{0, 0, active, 0.0f};
     for (;;) {
         bool missed = false;
         while (current.count == 0) {
+            // The interval test picks the children some ray may enter; each ray's own test
+            // then says which do, so a subtree is walked for its rays only (near the rays'
+            // origins, where feelers start among small boxes, the interval alone admits
+            // many that none enters).
             const Node& node = nodes_[current.child];
             Float t_enter;
-            unsigned mask = boxes.test(node, largest, t_enter);
+            std::array<unsigned, N> entering;
+            unsigned mask = 0;
+            for (unsigned m = boxes.test(node, largest, t_enter); m != 0; m &= m - 1) {
+                const int lane = __builtin_ctz(m);
+                entering[lane] = node.count[lane] == 0 && boxes.one_origin
+                                     ? current.rays
+                                     : boxes.rays_entering(node, lane, limits) & current.rays;
+                if (entering[lane] != 0) mask |= 1u << lane;
+            }
             if (mask == 0) {
                 missed = true;
                 break;
             }
-            const std::uint32_t parent = current.child;
             int lane = __builtin_ctz(mask);
-            current = {node.child[lane], node.count[lane], parent, static_cast<std::uint32_t>(lane),
-                       t_enter[lane]};
+            current = {node.child[lane], node.count[lane], entering[lane], t_enter[lane]};
             const int first = top;
             for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
                 lane = __builtin_ctz(mask);
-                Pending other{node.child[lane], node.count[lane], parent,
-                              static_cast<std::uint32_t>(lane), t_enter[lane]};
+                Pending other{node.child[lane], node.count[lane], entering[lane], t_enter[lane]};
                 if (!kAnyHit && other.t_enter < current.t_enter) std::swap(other, current);
                 int i = top++;
                 if constexpr (!kAnyHit)
@@ -166,24 +181,20 @@ void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
             }
         }
         if (!missed) {
-            const unsigned entering = boxes.rays_entering(nodes_[current.parent],
-                                                          static_cast<int>(current.lane), limits) &
-                                      active;
-            if (entering != 0) {
-                const unsigned hit = hit_leaf(current.child, current.count, entering);
-                if (hit != 0) {
-                    if constexpr (kAnyHit) {
-                        active &= ~hit;
-                        if (active == 0) return;
-                    }
-                    update_limits();
+            const unsigned hit = hit_leaf(current.child, current.count, current.rays);
+            if (hit != 0) {
+                if constexpr (kAnyHit) {
+                    active &= ~hit;
+                    if (active == 0) return;
                 }
+                update_limits();
             }
         }
         do {
             if (top == 0) return;
             current = stack[--top];
-        } while (current.t_enter >= largest);
+            current.rays &= active;
+        } while (current.rays == 0 || current.t_enter >= largest);
     }
 }
 
