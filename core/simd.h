@@ -65,6 +65,7 @@ inline Float4 vabs(Float4 a) { return vmax(a, -a); }
 #if defined(__AVX__)  // without AVX, eight lanes are not used (and would change the ABI)
 inline Float8 vmin(Float8 a, Float8 b) { return _mm256_min_ps(a, b); }
 inline Float8 vmax(Float8 a, Float8 b) { return _mm256_max_ps(a, b); }
+inline Float8 vabs(Float8 a) { return vmax(a, -a); }
 inline unsigned bits(Mask8 m) {
     return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
 }

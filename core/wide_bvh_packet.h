@@ -35,32 +35,44 @@ struct PacketBoxes {
     int near[3], far[3];
     bool one_origin = true;  // the rays share their origin (a camera's): the interval is tight
 
-    // False where the interval says nothing useful: then trace the rays alone.
+    // False where the interval says nothing useful: then trace the rays alone. The
+    // rays' origins are finite (traverse_packet leaves the others out); lanes outside
+    // `active` repeat its first ray, so they widen nothing.
     bool set(const Ray* rays, unsigned active) {
-        one_origin = true;
+        constexpr unsigned kAll = (1u << N) - 1u;
         const int first = __builtin_ctz(active);
+        const auto lowest = [](const Float& v) {
+            float m = v[0];
+            for (int lane = 1; lane < N; ++lane) m = std::min(m, v[lane]);
+            return m;
+        };
+        const auto highest = [](const Float& v) {
+            float m = v[0];
+            for (int lane = 1; lane < N; ++lane) m = std::max(m, v[lane]);
+            return m;
+        };
+        one_origin = true;
         for (int a = 0; a < 3; ++a) {
-            const bool up = rays[first].dir[a] > 0.0f;
-            float o_lo = kInfinity, o_hi = -kInfinity, i_lo = kInfinity, i_hi = -kInfinity;
+            Float d;
             for (int lane = 0; lane < N; ++lane) {
                 const Ray& r = rays[(active >> lane) & 1u ? lane : first];
-                const float inv_a = 1.0f / r.dir[a];
-                if (!std::isfinite(inv_a) || (r.dir[a] > 0.0f) != up || !std::isfinite(r.origin[a]))
-                    return false;
-                inv[a][lane] = inv_a;
+                d[lane] = r.dir[a];
                 origin[a][lane] = r.origin[a];
-                o_lo = std::min(o_lo, r.origin[a]);
-                o_hi = std::max(o_hi, r.origin[a]);
-                i_lo = std::min(i_lo, inv_a);
-                i_hi = std::max(i_hi, inv_a);
             }
+            inv[a] = 1.0f / d;  // lane by lane the single ray's 1.0f / dir (IEEE division)
+            const unsigned up = bits(d > 0.0f), down = bits(d < 0.0f);
+            if ((up != kAll && down != kAll) ||
+                bits(vabs(inv[a]) < splat<Float>(kInfinity)) != kAll)
+                return false;
+            const float o_lo = lowest(origin[a]), o_hi = highest(origin[a]);
             one_origin = one_origin && o_lo == o_hi;
-            entry_origin[a] = splat<Float>(up ? o_hi : o_lo);
-            exit_origin[a] = splat<Float>(up ? o_lo : o_hi);
-            inv_lo[a] = splat<Float>(i_lo);
-            inv_hi[a] = splat<Float>(i_hi);
-            near[a] = up ? a : a + 3;
-            far[a] = up ? a + 3 : a;
+            const bool positive = up == kAll;
+            entry_origin[a] = splat<Float>(positive ? o_hi : o_lo);
+            exit_origin[a] = splat<Float>(positive ? o_lo : o_hi);
+            inv_lo[a] = splat<Float>(lowest(inv[a]));
+            inv_hi[a] = splat<Float>(highest(inv[a]));
+            near[a] = positive ? a : a + 3;
+            far[a] = positive ? a + 3 : a;
         }
         return true;
     }
