@@ -11,6 +11,7 @@
 
 #include "core/parallel.h"
 #include "core/shapes.h"
+#include "core/triangle_packet.h"
 
 // For the leaf tests handed to a traversal: GCC otherwise leaves them as calls. (On the
 // bunny the difference was within rtbench's run-to-run noise: docs/BENCHMARKS.md.)
@@ -134,33 +135,72 @@ bool TriangleMesh::occluded(const Ray& r, float t_max) const {
         });
 }
 
+namespace {
+
+// A leaf this many rays of a packet enter tests its triangles across the rays
+// (core/triangle_packet.h); fewer, each ray tests them alone.
+constexpr int kRaysAcross = 3;
+
+// The packet's rays set up for the watertight test, each alone and, where they share
+// their permutation, together.
+struct PacketShear {
+    std::array<ShearedRay, kPacketWidth> each;
+    ShearedRays<kPacketWidth> together;
+    bool shared = false;
+
+    PacketShear(const Ray* rays, unsigned active) {
+        for (unsigned m = active; m != 0; m &= m - 1) {
+            const unsigned lane = __builtin_ctz(m);
+            each[lane] = ShearedRay(rays[lane]);
+        }
+        shared = active != 0 && together.set(each.data(), active);
+    }
+    bool across(unsigned lanes) const { return shared && std::popcount(lanes) >= kRaysAcross; }
+};
+
+}  // namespace
+
 unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned active) const {
     std::array<float, kPacketWidth> t_max;
-    std::array<std::optional<ShearedRay>, kPacketWidth> sheared;
-    for (unsigned m = active; m != 0; m &= m - 1) {
-        const unsigned lane = __builtin_ctz(m);
-        t_max[lane] = hits[lane].t;
-        sheared[lane].emplace(rays[lane]);
-    }
+    for (unsigned m = active; m != 0; m &= m - 1)
+        t_max[__builtin_ctz(m)] = hits[__builtin_ctz(m)].t;
+    const PacketShear shear(rays, active);
     unsigned found = 0;
     accel_.traverse_packet<false>(
         rays, t_max.data(), active,
         [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
             unsigned hit = 0;
             const std::uint32_t start = first_pack(leaf);
-            for (; lanes != 0; lanes &= lanes - 1) {
-                const unsigned lane = __builtin_ctz(lanes);
+            const auto record = [&](unsigned ray, std::uint32_t pack, int lane, float b1,
+                                    float b2) {
+                Hit& out = hits[ray];
+                out.prim = pack_prims_[kTriangle4Lanes * pack + static_cast<std::uint32_t>(lane)];
+                out.b1 = b1;
+                out.b2 = b2;
+                hit |= 1u << ray;
+            };
+            if (shear.across(lanes)) {
+                std::array<int, kPacketWidth> lane;
+                std::array<float, kPacketWidth> b1, b2;
                 for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
-                    const Triangle4Hit h =
-                        rt::intersect(packs_[start + k], *sheared[lane], t_max[lane]);
-                    if (h.lane < 0) continue;
-                    t_max[lane] = h.t;
-                    Hit& out = hits[lane];
-                    out.prim = pack_prims_[kTriangle4Lanes * (start + k) +
-                                           static_cast<std::uint32_t>(h.lane)];
-                    out.b1 = h.b1;
-                    out.b2 = h.b2;
-                    hit |= 1u << lane;
+                    unsigned h =
+                        rt::intersect<false>(packs_[start + k], shear.together, lanes, t_max.data(),
+                                             lane.data(), b1.data(), b2.data());
+                    for (; h != 0; h &= h - 1) {
+                        const unsigned ray = __builtin_ctz(h);
+                        record(ray, start + k, lane[ray], b1[ray], b2[ray]);
+                    }
+                }
+            } else {
+                for (; lanes != 0; lanes &= lanes - 1) {
+                    const unsigned ray = __builtin_ctz(lanes);
+                    for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
+                        const Triangle4Hit h =
+                            rt::intersect(packs_[start + k], shear.each[ray], t_max[ray]);
+                        if (h.lane < 0) continue;
+                        t_max[ray] = h.t;
+                        record(ray, start + k, h.lane, h.b1, h.b2);
+                    }
                 }
             }
             found |= hit;
@@ -175,24 +215,32 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
 
 unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsigned active) const {
     std::array<float, kPacketWidth> limits;
-    std::array<std::optional<ShearedRay>, kPacketWidth> sheared;
-    for (unsigned m = active; m != 0; m &= m - 1) {
-        const unsigned lane = __builtin_ctz(m);
-        limits[lane] = t_max[lane];
-        sheared[lane].emplace(rays[lane]);
-    }
+    for (unsigned m = active; m != 0; m &= m - 1)
+        limits[__builtin_ctz(m)] = t_max[__builtin_ctz(m)];
+    const PacketShear shear(rays, active);
     unsigned blocked = 0;
     accel_.traverse_packet<true>(
         rays, limits.data(), active,
         [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
             unsigned hit = 0;
             const std::uint32_t start = first_pack(leaf);
-            for (; lanes != 0; lanes &= lanes - 1) {
-                const unsigned lane = __builtin_ctz(lanes);
-                for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
-                    if (rt::intersect(packs_[start + k], *sheared[lane], limits[lane]).lane >= 0) {
-                        hit |= 1u << lane;
-                        break;
+            if (shear.across(lanes)) {
+                for (std::uint32_t k = 0; kTriangle4Lanes * k < count && lanes != 0; ++k) {
+                    const unsigned h =
+                        rt::intersect<true>(packs_[start + k], shear.together, lanes, limits.data(),
+                                            nullptr, nullptr, nullptr);
+                    hit |= h;
+                    lanes &= ~h;
+                }
+            } else {
+                for (; lanes != 0; lanes &= lanes - 1) {
+                    const unsigned ray = __builtin_ctz(lanes);
+                    for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
+                        if (rt::intersect(packs_[start + k], shear.each[ray], limits[ray]).lane >=
+                            0) {
+                            hit |= 1u << ray;
+                            break;
+                        }
                     }
                 }
             }

@@ -18,10 +18,11 @@ namespace rt {
 // A ray prepared for the watertight test: the axes permuted so that z is the largest
 // component of the direction, and the shear that maps the direction onto +z.
 struct ShearedRay {
-    int kx, ky, kz;
-    float sx, sy, sz;
-    vec3 origin;
+    int kx = 0, ky = 1, kz = 2;
+    float sx = 0.0f, sy = 0.0f, sz = 1.0f;
+    vec3 origin{0.0f};
 
+    ShearedRay() = default;
     explicit ShearedRay(const Ray& r) : origin(r.origin) {
         const vec3 a{std::fabs(r.dir.x), std::fabs(r.dir.y), std::fabs(r.dir.z)};
         kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);

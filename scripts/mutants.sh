@@ -224,6 +224,9 @@ mutant tile-rays-off-centre core/renderer.cpp \
 mutant packet-interval-takes-one-inverse core/wide_bvh_packet.h \
     'return d * (d >= zero ? inv_lo[a] : inv_hi[a]);' 'return d * inv_hi[a];' \
     rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant packet-triangles-error-bound-unscaled core/triangle_packet.h \
+    'const Float z_max = max3(az, bz, cz) * r.abs_sz;' 'const Float z_max = max3(az, bz, cz);' \
+    rt_tests $(unit 'TrianglePacket.*')
 mutant packet-mesh-sees-world-rays core/scene.cpp \
     'intersect_packet(local.data(), hits, lanes)' 'intersect_packet(rays, hits, lanes)' \
     rt_tests $(unit 'ScenePackets.*')

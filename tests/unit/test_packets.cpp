@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <map>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -10,6 +11,7 @@
 #include "core/mesh.h"
 #include "core/scene.h"
 #include "core/tessellate.h"
+#include "core/triangle_packet.h"
 #include "test_util.h"
 
 namespace rt {
@@ -183,6 +185,80 @@ TEST(ScenePackets, EveryPixelGetsTheHitItGetsAlone) {
         }
         EXPECT_GT(hits, camera.rows * camera.cols / 4) << name;
     }
+}
+
+// The test across rays (core/triangle_packet.h) against Triangle4's for each ray alone, bit
+// for bit: random packs, and rays leaving a large triangle's surface (where the t bound
+// of the rounding error decides: a wrong bound lets them hit the triangle they leave).
+TEST(TrianglePacket, EachRayGetsWhatItsOwnTestGives) {
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const vec3 a{0, 0, 0}, b{0, 548.8f, 0}, c{0, 548.8f, 559.2f};   // the Cornell box's left wall
+    std::map<std::array<int, 3>, std::vector<ShearedRay>> by_axes;  // rays sharing a permutation
+    int compared = 0, hits = 0, self_hits = 0;
+    for (int round = 0; round < 400; ++round) {
+        Triangle4 pack;
+        const bool wall = round % 2 == 0;
+        for (int lane = 0; lane < 4; ++lane) {
+            if (wall && lane == 1) {
+                pack.set(lane, a, b, c);
+            } else if (lane < 3) {
+                const vec3 centre = random_in(rng, 40.0f);
+                pack.set(lane, centre + random_in(rng, 30.0f), centre + random_in(rng, 30.0f),
+                         centre + random_in(rng, 30.0f));
+            }
+        }
+        by_axes.clear();
+        for (int i = 0; i < 64 * kW; ++i) {
+            Ray r;
+            if (wall) {
+                float w1 = u(rng), w2 = u(rng);
+                if (w1 + w2 > 1.0f) w1 = 1.0f - w1, w2 = 1.0f - w2;
+                r.origin = offset_ray_origin((1.0f - w1 - w2) * a + w1 * b + w2 * c, {1, 0, 0});
+                r.dir = {u(rng) * 300.0f + 1e-3f, (u(rng) - 0.5f) * 800.0f,
+                         (u(rng) - 0.5f) * 800.0f};
+            } else {
+                r.origin = random_in(rng, 80.0f);
+                r.dir = random_in(rng, 40.0f) - r.origin;  // towards the triangles
+            }
+            const ShearedRay sheared(r);
+            by_axes[{sheared.kx, sheared.ky, sheared.kz}].push_back(sheared);
+        }
+        for (const auto& [axes, rays] : by_axes) {
+            for (std::size_t first = 0; first + kW <= rays.size(); first += kW) {
+                const unsigned lanes =
+                    round % 3 == 0 ? (rng() | 1u) & ((1u << kW) - 1u) : (1u << kW) - 1u;
+                ShearedRays<kW> together;
+                ASSERT_TRUE(together.set(&rays[first], lanes));
+                std::array<float, kW> t_max, limits;
+                std::array<int, kW> lane;
+                std::array<float, kW> b1, b2;
+                for (int k = 0; k < kW; ++k) t_max[k] = limits[k] = wall ? 1.0f : 200.0f;
+                const unsigned found = intersect<false>(pack, together, lanes, t_max.data(),
+                                                        lane.data(), b1.data(), b2.data());
+                const unsigned any = intersect<true>(pack, together, lanes, limits.data(), nullptr,
+                                                     nullptr, nullptr);
+                EXPECT_EQ(any, found);
+                for (int k = 0; k < kW; ++k) {
+                    if (!((lanes >> k) & 1u)) continue;
+                    ++compared;
+                    const Triangle4Hit alone =
+                        intersect(pack, rays[first + k], wall ? 1.0f : 200.0f);
+                    ASSERT_EQ(((found >> k) & 1u) != 0, alone.lane >= 0) << "round " << round;
+                    if (alone.lane < 0) continue;
+                    ++hits;
+                    self_hits += wall && alone.lane == 1;
+                    EXPECT_EQ(lane[k], alone.lane);
+                    EXPECT_EQ(t_max[k], alone.t);
+                    EXPECT_EQ(b1[k], alone.b1);
+                    EXPECT_EQ(b2[k], alone.b2);
+                }
+            }
+        }
+    }
+    EXPECT_GT(compared, 50000);
+    EXPECT_GT(hits, compared / 50);
+    EXPECT_EQ(self_hits, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryKind, PacketTest,

@@ -1,0 +1,103 @@
+#pragma once
+// A pack's four triangles against a packet of rays, the rays as the lanes: for a leaf that
+// several rays of a packet enter, one vector test per triangle instead of one Triangle4
+// test per ray. The rays must share their permutation of the axes (ShearedRay's kx, ky,
+// kz, which coherent rays do); each lane then does, operation for operation, what
+// intersect(Triangle4, ShearedRay) does for that ray and that triangle, so every ray
+// gets the very hit (t, triangle, barycentrics) it gets alone.
+
+#include <cmath>
+#include <cstdint>
+
+#include "core/simd.h"
+#include "core/triangle4.h"
+
+namespace rt {
+
+template <int N>
+struct ShearedRays {
+    using Float = typename Lanes<N>::Float;
+    int kx = 0, ky = 1, kz = 2;
+    Float sx{}, sy{}, sz{}, abs_sz{}, origin[3]{};
+
+    // False where the rays (those of `lanes`) do not share one permutation.
+    bool set(const ShearedRay* rays, unsigned lanes) {
+        const int first = __builtin_ctz(lanes);
+        kx = rays[first].kx;
+        ky = rays[first].ky;
+        kz = rays[first].kz;
+        for (int lane = 0; lane < N; ++lane) {
+            const ShearedRay& r = rays[(lanes >> lane) & 1u ? lane : first];
+            if (r.kx != kx || r.ky != ky || r.kz != kz) return false;
+            sx[lane] = r.sx;
+            sy[lane] = r.sy;
+            sz[lane] = r.sz;
+            abs_sz[lane] = std::fabs(r.sz);
+            for (int a = 0; a < 3; ++a) origin[a][lane] = r.origin[a];
+        }
+        return true;
+    }
+};
+
+// Per ray, the nearest hit of the pack's triangles within its own (0, t_max): fills
+// t_max, lane (the triangle's lane in the pack), b1 and b2 of the rays that hit one and
+// returns their bits. kAnyHit: returns the rays that hit any, nothing else written.
+template <bool kAnyHit, int N>
+[[gnu::always_inline]] inline unsigned intersect(const Triangle4& tri, const ShearedRays<N>& r,
+                                                 unsigned lanes, float* t_max, int* lane_out,
+                                                 float* b1, float* b2) {
+    using Float = typename Lanes<N>::Float;
+    const auto gamma = [](float n) { return n * 0x1p-24f / (1.0f - n * 0x1p-24f); };
+    const auto max3 = [](Float a, Float b, Float c) {
+        return vmax(vmax(vabs(a), vabs(b)), vabs(c));
+    };
+    Float limit;
+    for (int lane = 0; lane < N; ++lane) limit[lane] = (lanes >> lane) & 1u ? t_max[lane] : 0.0f;
+    unsigned found = 0;
+    for (int j = 0; j < 4; ++j) {
+        const auto rel = [&](int vertex, int axis) {
+            return splat<Float>(tri.v[vertex][axis][j]) - r.origin[axis];
+        };
+        const Float az = rel(0, r.kz), bz = rel(1, r.kz), cz = rel(2, r.kz);
+        const Float ax = rel(0, r.kx) - r.sx * az, ay = rel(0, r.ky) - r.sy * az;
+        const Float bx = rel(1, r.kx) - r.sx * bz, by = rel(1, r.ky) - r.sy * bz;
+        const Float cx = rel(2, r.kx) - r.sx * cz, cy = rel(2, r.ky) - r.sy * cz;
+        const Float u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+        const Float zero = splat<Float>(0.0f);
+        const auto same_sign =
+            ((u >= zero) & (v >= zero) & (w >= zero)) | ((u <= zero) & (v <= zero) & (w <= zero));
+        const Float det = u + v + w;
+        const auto inside = same_sign & (det != zero);
+        if ((bits(inside) & lanes) == 0) continue;
+        const Float t_scaled = r.sz * (u * az + v * bz + w * cz);
+        const Float t = t_scaled / det;
+        unsigned candidates = bits(inside & (t > zero) & (t < limit)) & lanes;
+        if (candidates == 0) continue;
+        const Float x_max = max3(ax, bx, cx), y_max = max3(ay, by, cy);
+        const Float z_max = max3(az, bz, cz) * r.abs_sz;
+        const Float delta_x = gamma(5) * (x_max + z_max), delta_y = gamma(5) * (y_max + z_max);
+        const Float delta_e = 2.0f * (gamma(2) * x_max * y_max + delta_y * x_max + delta_x * y_max);
+        const Float e_max = max3(u, v, w);
+        const Float delta_t_det =
+            3.0f * (gamma(3) * e_max * z_max + delta_e * z_max + gamma(3) * z_max * e_max);
+        candidates &= bits(vabs(t_scaled) > delta_t_det);
+        if constexpr (kAnyHit) {
+            found |= candidates;
+            lanes &= ~candidates;
+            if (lanes == 0) return found;
+            continue;
+        }
+        for (; candidates != 0; candidates &= candidates - 1) {
+            const int ray = __builtin_ctz(candidates);
+            limit[ray] = t[ray];
+            t_max[ray] = t[ray];
+            lane_out[ray] = j;
+            b1[ray] = v[ray] / det[ray];
+            b2[ray] = w[ray] / det[ray];
+            found |= 1u << ray;
+        }
+    }
+    return found;
+}
+
+}  // namespace rt
