@@ -148,12 +148,22 @@ struct PacketShear {
     ShearedRays<kPacketWidth> together;
     bool shared = false;
 
-    PacketShear(const Ray* rays, unsigned active) {
+    // Set up at the first leaf a packet reaches (most of a camera's packets miss a mesh).
+    const Ray* rays;
+    unsigned active;
+    bool ready = false;
+
+    PacketShear(const Ray* r, unsigned a) : rays(r), active(a) {}
+    const PacketShear& get() {
+        if (ready) return *this;
+        ready = true;
+        shared = active != 0 && together.set(rays, active);
         for (unsigned m = active; m != 0; m &= m - 1) {
             const unsigned lane = __builtin_ctz(m);
-            each[lane] = ShearedRay(rays[lane]);
+            each[lane] =
+                shared ? together.lane_ray(static_cast<int>(lane)) : ShearedRay(rays[lane]);
         }
-        shared = active != 0 && together.set(each.data(), active);
+        return *this;
     }
     bool across(unsigned lanes) const { return shared && std::popcount(lanes) >= kRaysAcross; }
 };
@@ -164,13 +174,14 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
     std::array<float, kPacketWidth> t_max;
     for (unsigned m = active; m != 0; m &= m - 1)
         t_max[__builtin_ctz(m)] = hits[__builtin_ctz(m)].t;
-    const PacketShear shear(rays, active);
+    PacketShear lazy_shear(rays, active);
     unsigned found = 0;
     accel_.traverse_packet<false>(
         rays, t_max.data(), active,
         [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
             unsigned hit = 0;
             const std::uint32_t start = first_pack(leaf);
+            const PacketShear& shear = lazy_shear.get();
             const auto record = [&](unsigned ray, std::uint32_t pack, int lane, float b1,
                                     float b2) {
                 Hit& out = hits[ray];
@@ -217,13 +228,14 @@ unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsi
     std::array<float, kPacketWidth> limits;
     for (unsigned m = active; m != 0; m &= m - 1)
         limits[__builtin_ctz(m)] = t_max[__builtin_ctz(m)];
-    const PacketShear shear(rays, active);
+    PacketShear lazy_shear(rays, active);
     unsigned blocked = 0;
     accel_.traverse_packet<true>(
         rays, limits.data(), active,
         [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
             unsigned hit = 0;
             const std::uint32_t start = first_pack(leaf);
+            const PacketShear& shear = lazy_shear.get();
             if (shear.across(lanes)) {
                 for (std::uint32_t k = 0; kTriangle4Lanes * k < count && lanes != 0; ++k) {
                     const unsigned h =

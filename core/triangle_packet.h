@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include "core/simd.h"
 #include "core/triangle4.h"
@@ -36,6 +37,56 @@ struct ShearedRays {
             for (int a = 0; a < 3; ++a) origin[a][lane] = r.origin[a];
         }
         return true;
+    }
+
+    // The same from the rays themselves, with vector arithmetic (lane by lane
+    // ShearedRay's: the same comparisons choose the axes, the same IEEE divisions).
+    bool set(const Ray* rays, unsigned lanes) {
+        constexpr unsigned kAll = (1u << N) - 1u;
+        const int first = __builtin_ctz(lanes);
+        Float d[3];
+        for (int lane = 0; lane < N; ++lane) {
+            const Ray& r = rays[(lanes >> lane) & 1u ? lane : first];
+            for (int a = 0; a < 3; ++a) {
+                d[a][lane] = r.dir[a];
+                origin[a][lane] = r.origin[a];
+            }
+        }
+        const Float ax = vabs(d[0]), ay = vabs(d[1]), az = vabs(d[2]);
+        const unsigned x_over_y = bits(ax > ay);
+        const unsigned z_is_x = x_over_y & bits(ax > az), z_is_y = ~x_over_y & bits(ay > az) & kAll;
+        if (z_is_x == kAll) {
+            kz = 0;
+        } else if (z_is_y == kAll) {
+            kz = 1;
+        } else if ((z_is_x | z_is_y) == 0) {
+            kz = 2;
+        } else {
+            return false;
+        }
+        kx = (kz + 1) % 3;
+        ky = (kx + 1) % 3;
+        const unsigned negative = bits(d[kz] < 0.0f);
+        if (negative != 0 && negative != kAll) return false;
+        if (negative != 0) std::swap(kx, ky);  // keep the winding
+        sx = d[kx] / d[kz];
+        sy = d[ky] / d[kz];
+        sz = 1.0f / d[kz];
+        abs_sz = vabs(sz);
+        return true;
+    }
+
+    // Lane `lane` as the single ray's ShearedRay.
+    ShearedRay lane_ray(int lane) const {
+        ShearedRay r;
+        r.kx = kx;
+        r.ky = ky;
+        r.kz = kz;
+        r.sx = sx[lane];
+        r.sy = sy[lane];
+        r.sz = sz[lane];
+        r.origin = vec3(origin[0][lane], origin[1][lane], origin[2][lane]);
+        return r;
     }
 };
 

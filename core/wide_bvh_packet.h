@@ -83,7 +83,8 @@ struct PacketBoxes {
     // difference times the smallest inverse if that difference is positive, else times
     // the largest; the largest for a far plane, the other way round. Rounding to nearest
     // is monotonic, so the bounds hold for every ray's own rounded slab test.
-    unsigned test(const WideBvhNode<N>& n, float t_max, Float& t_enter) const {
+    [[gnu::always_inline]] unsigned test(const WideBvhNode<N>& n, float t_max,
+                                         Float& t_enter) const {
         const Float zero = splat<Float>(0.0f);
         const auto entry = [&](int a) {
             const Float d = n.bounds[near[a]] - entry_origin[a];
@@ -101,7 +102,8 @@ struct PacketBoxes {
 
     // A bit per ray that enters child `lane` of `n` within its own (0, t_max): the single
     // ray's test (BoxRay::test), with the rays as the lanes.
-    unsigned rays_entering(const WideBvhNode<N>& n, int lane, const Float& t_max) const {
+    [[gnu::always_inline]] unsigned rays_entering(const WideBvhNode<N>& n, int lane,
+                                                  const Float& t_max) const {
         const auto plane = [&](int index, int a) {
             return (splat<Float>(n.bounds[index][lane]) - origin[a]) * inv[a];
         };

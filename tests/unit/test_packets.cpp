@@ -193,8 +193,8 @@ TEST(ScenePackets, EveryPixelGetsTheHitItGetsAlone) {
 TEST(TrianglePacket, EachRayGetsWhatItsOwnTestGives) {
     std::mt19937 rng(29);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    const vec3 a{0, 0, 0}, b{0, 548.8f, 0}, c{0, 548.8f, 559.2f};   // the Cornell box's left wall
-    std::map<std::array<int, 3>, std::vector<ShearedRay>> by_axes;  // rays sharing a permutation
+    const vec3 a{0, 0, 0}, b{0, 548.8f, 0}, c{0, 548.8f, 559.2f};  // the Cornell box's left wall
+    std::map<std::array<int, 3>, std::vector<Ray>> by_axes;        // rays sharing a permutation
     int compared = 0, hits = 0, self_hits = 0;
     for (int round = 0; round < 400; ++round) {
         Triangle4 pack;
@@ -222,14 +222,28 @@ TEST(TrianglePacket, EachRayGetsWhatItsOwnTestGives) {
                 r.dir = random_in(rng, 40.0f) - r.origin;  // towards the triangles
             }
             const ShearedRay sheared(r);
-            by_axes[{sheared.kx, sheared.ky, sheared.kz}].push_back(sheared);
+            by_axes[{sheared.kx, sheared.ky, sheared.kz}].push_back(r);
         }
         for (const auto& [axes, rays] : by_axes) {
             for (std::size_t first = 0; first + kW <= rays.size(); first += kW) {
                 const unsigned lanes =
                     round % 3 == 0 ? (rng() | 1u) & ((1u << kW) - 1u) : (1u << kW) - 1u;
-                ShearedRays<kW> together;
-                ASSERT_TRUE(together.set(&rays[first], lanes));
+                std::array<ShearedRay, kW> each;
+                for (int k = 0; k < kW; ++k) each[k] = ShearedRay(rays[first + k]);
+                ShearedRays<kW> together, from_rays;
+                ASSERT_TRUE(together.set(each.data(), lanes));
+                ASSERT_TRUE(from_rays.set(&rays[first], lanes));  // the vector set-up: the same
+                for (int k = 0; k < kW; ++k) {
+                    if (!((lanes >> k) & 1u)) continue;
+                    const ShearedRay lane_ray = from_rays.lane_ray(k);
+                    ASSERT_EQ(lane_ray.kx, each[k].kx);
+                    ASSERT_EQ(lane_ray.ky, each[k].ky);
+                    ASSERT_EQ(lane_ray.kz, each[k].kz);
+                    ASSERT_EQ(lane_ray.sx, each[k].sx);
+                    ASSERT_EQ(lane_ray.sy, each[k].sy);
+                    ASSERT_EQ(lane_ray.sz, each[k].sz);
+                    ASSERT_EQ(lane_ray.origin, each[k].origin);
+                }
                 std::array<float, kW> t_max, limits;
                 std::array<int, kW> lane;
                 std::array<float, kW> b1, b2;
@@ -242,8 +256,7 @@ TEST(TrianglePacket, EachRayGetsWhatItsOwnTestGives) {
                 for (int k = 0; k < kW; ++k) {
                     if (!((lanes >> k) & 1u)) continue;
                     ++compared;
-                    const Triangle4Hit alone =
-                        intersect(pack, rays[first + k], wall ? 1.0f : 200.0f);
+                    const Triangle4Hit alone = intersect(pack, each[k], wall ? 1.0f : 200.0f);
                     ASSERT_EQ(((found >> k) & 1u) != 0, alone.lane >= 0) << "round " << round;
                     if (alone.lane < 0) continue;
                     ++hits;
