@@ -54,51 +54,75 @@ struct Triangle4Hit {
     float t = kInfinity, b1 = 0.0f, b2 = 0.0f;  // b1, b2: weights of the second and third vertex
 };
 
+namespace detail {
+
+// The values of one watertight test, each lane a triangle (Triangle4) or a ray (the
+// packets' test, core/triangle_packet.h), computed by the same expressions for both so
+// that both give the very same answer. rel(vertex, axis): a vertex's coordinate relative
+// to the ray's origin; sx, sy: the shear (a float, or a vector of the rays').
+template <class V>
+struct WatertightValues {
+    V az, bz, cz, ax, ay, bx, by, cx, cy;
+    V u, v, w;  // the edge functions: each is the weight of the opposite vertex, times their sum
+    V det;      // their sum
+};
+
+template <class V, class Rel, class S>
+[[gnu::always_inline]] inline WatertightValues<V> watertight_values(const Rel& rel, int kx, int ky,
+                                                                    int kz, S sx, S sy) {
+    WatertightValues<V> o;
+    o.az = rel(0, kz), o.bz = rel(1, kz), o.cz = rel(2, kz);
+    o.ax = rel(0, kx) - sx * o.az, o.ay = rel(0, ky) - sy * o.az;
+    o.bx = rel(1, kx) - sx * o.bz, o.by = rel(1, ky) - sy * o.bz;
+    o.cx = rel(2, kx) - sx * o.cz, o.cy = rel(2, ky) - sy * o.cz;
+    o.u = o.cx * o.by - o.cy * o.bx, o.v = o.ax * o.cy - o.ay * o.cx,
+    o.w = o.bx * o.ay - o.by * o.ax;
+    o.det = o.u + o.v + o.w;
+    return o;
+}
+
+// Not only t > 0 but t beyond its own rounding error (Pharr, Jakob and Humphreys, PBR 3rd
+// ed., 3.9.6): the error grows with the triangle's size, so a ray leaving a large
+// triangle, offset from it by a little (offset_ray_origin), could otherwise hit the
+// triangle itself just in front of its origin: acne on big walls. The bound on |t * det|,
+// compared with it without a division; abs_sz: |sz|.
+template <class V>
+[[gnu::always_inline]] inline V t_det_error(const WatertightValues<V>& o, V abs_sz) {
+    const auto gamma = [](float n) { return n * 0x1p-24f / (1.0f - n * 0x1p-24f); };
+    const auto max3 = [](V a, V b, V c) { return vmax(vmax(vabs(a), vabs(b)), vabs(c)); };
+    const V x_max = max3(o.ax, o.bx, o.cx), y_max = max3(o.ay, o.by, o.cy);
+    const V z_max = max3(o.az, o.bz, o.cz) * abs_sz;
+    const V delta_x = gamma(5) * (x_max + z_max), delta_y = gamma(5) * (y_max + z_max);
+    const V delta_e = 2.0f * (gamma(2) * x_max * y_max + delta_y * x_max + delta_x * y_max);
+    const V e_max = max3(o.u, o.v, o.w);
+    return 3.0f * (gamma(3) * e_max * z_max + delta_e * z_max + gamma(3) * z_max * e_max);
+}
+
+}  // namespace detail
+
 // `lanes`: the lanes that may hit (a bit each); the others are computed and ignored, so a
 // lane's answer is the same whichever others are asked for.
 [[gnu::always_inline]] inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r,
                                                      float t_max, unsigned lanes = 0xfu) {
     const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
-    const Float4 az = rel(0, r.kz), bz = rel(1, r.kz), cz = rel(2, r.kz);
-    const Float4 ax = rel(0, r.kx) - r.sx * az, ay = rel(0, r.ky) - r.sy * az;
-    const Float4 bx = rel(1, r.kx) - r.sx * bz, by = rel(1, r.ky) - r.sy * bz;
-    const Float4 cx = rel(2, r.kx) - r.sx * cz, cy = rel(2, r.ky) - r.sy * cz;
-    // The edge functions: each is the weight of the opposite vertex, times their sum.
-    const Float4 u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
-    const Mask4 same_sign =
-        ((u >= 0.0f) & (v >= 0.0f) & (w >= 0.0f)) | ((u <= 0.0f) & (v <= 0.0f) & (w <= 0.0f));
-    const Float4 det = u + v + w;
-    const Mask4 inside = same_sign & (det != 0.0f);
+    const auto o = detail::watertight_values<Float4>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
+    const Mask4 same_sign = ((o.u >= 0.0f) & (o.v >= 0.0f) & (o.w >= 0.0f)) |
+                            ((o.u <= 0.0f) & (o.v <= 0.0f) & (o.w <= 0.0f));
+    const Mask4 inside = same_sign & (o.det != 0.0f);
     Triangle4Hit best;
     if (bits(inside) == 0) return best;  // most leaf tests end here, before any division
-    const Float4 t_scaled = r.sz * (u * az + v * bz + w * cz);  // t * det
-    const Float4 t = t_scaled / det;
+    const Float4 t_scaled = r.sz * (o.u * o.az + o.v * o.bz + o.w * o.cz);  // t * det
+    const Float4 t = t_scaled / o.det;
     unsigned candidates = bits(inside & (t > 0.0f) & (t < t_max)) & lanes;
     if (candidates == 0) return best;
-    // Not only t > 0 but t beyond its own rounding error (Pharr, Jakob and Humphreys,
-    // PBR 3rd ed., 3.9.6): the error grows with the triangle's size, so a ray leaving a
-    // large triangle, offset from it by a little (offset_ray_origin), could otherwise hit
-    // the triangle itself just in front of its origin: acne on big walls. Compared as
-    // |t * det| against the bound times |det|, so without a division.
-    const auto gamma = [](float n) { return n * 0x1p-24f / (1.0f - n * 0x1p-24f); };
-    const auto max3 = [](Float4 a, Float4 b, Float4 c) {
-        return vmax(vmax(vabs(a), vabs(b)), vabs(c));
-    };
-    const Float4 x_max = max3(ax, bx, cx), y_max = max3(ay, by, cy);
-    const Float4 z_max = max3(az, bz, cz) * std::fabs(r.sz);
-    const Float4 delta_x = gamma(5) * (x_max + z_max), delta_y = gamma(5) * (y_max + z_max);
-    const Float4 delta_e = 2.0f * (gamma(2) * x_max * y_max + delta_y * x_max + delta_x * y_max);
-    const Float4 e_max = max3(u, v, w);
-    const Float4 delta_t_det =
-        3.0f * (gamma(3) * e_max * z_max + delta_e * z_max + gamma(3) * z_max * e_max);
-    candidates &= bits(vabs(t_scaled) > delta_t_det);
+    candidates &= bits(vabs(t_scaled) > detail::t_det_error(o, splat<Float4>(std::fabs(r.sz))));
     for (; candidates != 0; candidates &= candidates - 1) {
         const int lane = __builtin_ctz(candidates);
         if (t[lane] < best.t) best = {lane, t[lane], 0.0f, 0.0f};
     }
     if (best.lane >= 0) {
-        best.b1 = v[best.lane] / det[best.lane];
-        best.b2 = w[best.lane] / det[best.lane];
+        best.b1 = o.v[best.lane] / o.det[best.lane];
+        best.b2 = o.w[best.lane] / o.det[best.lane];
     }
     return best;
 }

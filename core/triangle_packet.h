@@ -98,10 +98,6 @@ template <bool kAnyHit, int N>
                                                  unsigned lanes, float* t_max, int* lane_out,
                                                  float* b1, float* b2) {
     using Float = typename Lanes<N>::Float;
-    const auto gamma = [](float n) { return n * 0x1p-24f / (1.0f - n * 0x1p-24f); };
-    const auto max3 = [](Float a, Float b, Float c) {
-        return vmax(vmax(vabs(a), vabs(b)), vabs(c));
-    };
     Float limit;
     for (int lane = 0; lane < N; ++lane) limit[lane] = (lanes >> lane) & 1u ? t_max[lane] : 0.0f;
     unsigned found = 0;
@@ -109,29 +105,17 @@ template <bool kAnyHit, int N>
         const auto rel = [&](int vertex, int axis) {
             return splat<Float>(tri.v[vertex][axis][j]) - r.origin[axis];
         };
-        const Float az = rel(0, r.kz), bz = rel(1, r.kz), cz = rel(2, r.kz);
-        const Float ax = rel(0, r.kx) - r.sx * az, ay = rel(0, r.ky) - r.sy * az;
-        const Float bx = rel(1, r.kx) - r.sx * bz, by = rel(1, r.ky) - r.sy * bz;
-        const Float cx = rel(2, r.kx) - r.sx * cz, cy = rel(2, r.ky) - r.sy * cz;
-        const Float u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+        const auto o = detail::watertight_values<Float>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
         const Float zero = splat<Float>(0.0f);
-        const auto same_sign =
-            ((u >= zero) & (v >= zero) & (w >= zero)) | ((u <= zero) & (v <= zero) & (w <= zero));
-        const Float det = u + v + w;
-        const auto inside = same_sign & (det != zero);
+        const auto same_sign = ((o.u >= zero) & (o.v >= zero) & (o.w >= zero)) |
+                               ((o.u <= zero) & (o.v <= zero) & (o.w <= zero));
+        const auto inside = same_sign & (o.det != zero);
         if ((bits(inside) & lanes) == 0) continue;
-        const Float t_scaled = r.sz * (u * az + v * bz + w * cz);
-        const Float t = t_scaled / det;
+        const Float t_scaled = r.sz * (o.u * o.az + o.v * o.bz + o.w * o.cz);
+        const Float t = t_scaled / o.det;
         unsigned candidates = bits(inside & (t > zero) & (t < limit)) & lanes;
         if (candidates == 0) continue;
-        const Float x_max = max3(ax, bx, cx), y_max = max3(ay, by, cy);
-        const Float z_max = max3(az, bz, cz) * r.abs_sz;
-        const Float delta_x = gamma(5) * (x_max + z_max), delta_y = gamma(5) * (y_max + z_max);
-        const Float delta_e = 2.0f * (gamma(2) * x_max * y_max + delta_y * x_max + delta_x * y_max);
-        const Float e_max = max3(u, v, w);
-        const Float delta_t_det =
-            3.0f * (gamma(3) * e_max * z_max + delta_e * z_max + gamma(3) * z_max * e_max);
-        candidates &= bits(vabs(t_scaled) > delta_t_det);
+        candidates &= bits(vabs(t_scaled) > detail::t_det_error(o, r.abs_sz));
         if constexpr (kAnyHit) {
             found |= candidates;
             lanes &= ~candidates;
@@ -143,8 +127,8 @@ template <bool kAnyHit, int N>
             limit[ray] = t[ray];
             t_max[ray] = t[ray];
             lane_out[ray] = j;
-            b1[ray] = v[ray] / det[ray];
-            b2[ray] = w[ray] / det[ray];
+            b1[ray] = o.v[ray] / o.det[ray];
+            b2[ray] = o.w[ray] / o.det[ray];
             found |= 1u << ray;
         }
     }

@@ -124,6 +124,19 @@ struct BoxRay {
     }
 };
 
+// Puts `other` on the stack to wait, the nearer of it and `current` going on as
+// `current`; the entries pushed since `first` stay sorted, the nearest on top (a shadow
+// feeler takes any hit: its order does not matter and is not kept).
+template <bool kAnyHit, class Pending, std::size_t K>
+[[gnu::always_inline]] inline void wait(std::array<Pending, K>& stack, int& top, int first,
+                                        Pending& current, Pending other) {
+    if (!kAnyHit && other.t_enter < current.t_enter) std::swap(other, current);
+    int i = top++;
+    if constexpr (!kAnyHit)
+        for (; i > first && stack[i - 1].t_enter < other.t_enter; --i) stack[i] = stack[i - 1];
+    stack[i] = other;
+}
+
 }  // namespace detail
 
 template <int N>
@@ -164,13 +177,8 @@ bool WideBvh<N>::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_lea
             const int first = top;
             for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
                 lane = __builtin_ctz(mask);
-                Pending other{node.child[lane], node.count[lane], t_enter[lane]};
-                if (!kAnyHit && other.t_enter < current.t_enter) std::swap(other, current);
-                int i = top++;
-                if constexpr (!kAnyHit)
-                    for (; i > first && stack[i - 1].t_enter < other.t_enter; --i)
-                        stack[i] = stack[i - 1];
-                stack[i] = other;
+                detail::wait<kAnyHit>(stack, top, first, current,
+                                      Pending{node.child[lane], node.count[lane], t_enter[lane]});
             }
         }
         if (!missed && hit_leaf(current.child, current.count, t_max)) {

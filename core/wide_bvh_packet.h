@@ -185,13 +185,9 @@ void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
             const int first = top;
             for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
                 lane = __builtin_ctz(mask);
-                Pending other{node.child[lane], node.count[lane], entering[lane], t_enter[lane]};
-                if (!kAnyHit && other.t_enter < current.t_enter) std::swap(other, current);
-                int i = top++;
-                if constexpr (!kAnyHit)
-                    for (; i > first && stack[i - 1].t_enter < other.t_enter; --i)
-                        stack[i] = stack[i - 1];
-                stack[i] = other;
+                detail::wait<kAnyHit>(
+                    stack, top, first, current,
+                    Pending{node.child[lane], node.count[lane], entering[lane], t_enter[lane]});
             }
         }
         if (!missed) {

@@ -225,8 +225,12 @@ mutant packet-interval-takes-one-inverse core/wide_bvh_packet.h \
     'return d * (d >= zero ? inv_lo[a] : inv_hi[a]);' 'return d * inv_hi[a];' \
     rt_tests $(unit 'EveryKind/PacketTest.*')
 mutant packet-triangles-error-bound-unscaled core/triangle_packet.h \
-    'const Float z_max = max3(az, bz, cz) * r.abs_sz;' 'const Float z_max = max3(az, bz, cz);' \
+    'detail::t_det_error(o, r.abs_sz)' 'detail::t_det_error(o, splat<Float>(1.0f))' \
     rt_tests $(unit 'TrianglePacket.*')
+mutant packet-skips-a-child core/wide_bvh_packet.h \
+    'for (mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
+    'for (mask &= mask - 1, mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
+    rt_tests $(unit 'EveryKind/PacketTest.*:ScenePackets.*')
 mutant packet-mesh-sees-world-rays core/scene.cpp \
     'intersect_packet(local.data(), hits, lanes)' 'intersect_packet(rays, hits, lanes)' \
     rt_tests $(unit 'ScenePackets.*')
