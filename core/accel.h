@@ -94,13 +94,8 @@ class Accel {
     void traverse_packet(const Ray* rays, float* t_max, unsigned active, HitLeaf&& hit_leaf) const {
         if (const auto* wide = std::get_if<DefaultWideBvh>(&impl_))
             return wide->traverse_packet<kAnyHit>(rays, t_max, active, hit_leaf);
-        for (active &= (1u << kPacketWidth) - 1u; active != 0; active &= active - 1) {
-            const unsigned lane = __builtin_ctz(active);
-            traverse_leaves<kAnyHit>(rays[lane], t_max[lane],
-                                     [&](std::uint32_t first, std::uint32_t count, float&) {
-                                         return hit_leaf(first, count, 1u << lane) != 0;
-                                     });
-        }
+        detail::one_by_one<kAnyHit>(*this, rays, t_max, active & ((1u << kPacketWidth) - 1u),
+                                    hit_leaf);
     }
     // The leaves traverse_leaves() hands out, as `f(first_slot, count)`, in slot order.
     template <class F>

@@ -116,13 +116,63 @@ struct PacketBoxes {
     }
 };
 
+// The rays' t_max as lanes (inactive ones -inf, so no box is entered) and the largest.
+template <int N>
+struct PacketLimits {
+    typename Lanes<N>::Float lanes;
+    float largest = -kInfinity;
+
+    void update(const float* t_max, unsigned active) {
+        largest = -kInfinity;
+        for (int lane = 0; lane < N; ++lane) {
+            lanes[lane] = (active >> lane) & 1u ? t_max[lane] : -kInfinity;
+            largest = std::max(largest, lanes[lane]);
+        }
+    }
+};
+
+// The children of `n` that some of `rays` enter: a bit each, with which rays
+// (`entering`) and a lower bound on where (`t_enter`). The interval test picks the
+// children some ray may enter; each ray's own test then says which do, so a subtree is
+// walked for its rays only (near the rays' origins, where feelers start among small
+// boxes, the interval alone admits many that none enters). Rays from one origin leave
+// the rays' own test of a leaf to the leaf.
+template <int N>
+[[gnu::always_inline]] inline unsigned children_entered(const PacketBoxes<N>& boxes,
+                                                        const WideBvhNode<N>& n, unsigned rays,
+                                                        const PacketLimits<N>& limits,
+                                                        typename Lanes<N>::Float& t_enter,
+                                                        std::array<unsigned, N>& entering) {
+    unsigned mask = 0;
+    for (unsigned m = boxes.test(n, limits.largest, t_enter); m != 0; m &= m - 1) {
+        const int lane = __builtin_ctz(m);
+        entering[lane] = n.count[lane] == 0 && boxes.one_origin
+                             ? rays
+                             : boxes.rays_entering(n, lane, limits.lanes) & rays;
+        if (entering[lane] != 0) mask |= 1u << lane;
+    }
+    return mask;
+}
+
+// The rays of `active` one at a time, through `s.traverse_leaves` (a packet whose rays
+// make no useful interval, or a structure without packets).
+template <bool kAnyHit, class S, class HitLeaf>
+void one_by_one(const S& s, const Ray* rays, float* t_max, unsigned active, HitLeaf& hit_leaf) {
+    for (; active != 0; active &= active - 1) {
+        const unsigned lane = __builtin_ctz(active);
+        s.template traverse_leaves<kAnyHit>(rays[lane], t_max[lane],
+                                            [&](std::uint32_t first, std::uint32_t count, float&) {
+                                                return hit_leaf(first, count, 1u << lane) != 0;
+                                            });
+    }
+}
+
 }  // namespace detail
 
 template <int N>
 template <bool kAnyHit, class HitLeaf>
 void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
                                  HitLeaf&& hit_leaf) const {
-    using Float = typename Lanes<N>::Float;
     active &= (1u << N) - 1u;
     for (unsigned m = active; m != 0; m &= m - 1) {
         const int lane = __builtin_ctz(m);
@@ -130,26 +180,10 @@ void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
     }
     if (nodes_.empty() || active == 0) return;
     detail::PacketBoxes<N> boxes;
-    if (!boxes.set(rays, active)) {
-        for (; active != 0; active &= active - 1) {
-            const unsigned lane = __builtin_ctz(active);
-            traverse_leaves<kAnyHit>(rays[lane], t_max[lane],
-                                     [&](std::uint32_t first, std::uint32_t count, float&) {
-                                         return hit_leaf(first, count, 1u << lane) != 0;
-                                     });
-        }
-        return;
-    }
-    Float limits;  // the rays' t_max as lanes; inactive ones -inf, so no box is entered
-    float largest = -kInfinity;
-    const auto update_limits = [&] {
-        largest = -kInfinity;
-        for (int lane = 0; lane < N; ++lane) {
-            limits[lane] = (active >> lane) & 1u ? t_max[lane] : -kInfinity;
-            largest = std::max(largest, limits[lane]);
-        }
-    };
-    update_limits();
+    if (!boxes.set(rays, active))
+        return detail::one_by_one<kAnyHit>(*this, rays, t_max, active, hit_leaf);
+    detail::PacketLimits<N> limits;
+    limits.update(t_max, active);
     struct Pending {
         std::uint32_t child, count;  // count 0: a node
         unsigned rays;               // the rays that enter it, each by its own test
@@ -159,23 +193,14 @@ void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
     int top = 0;
     Pending current{0, 0, active, 0.0f};
     for (;;) {
+        // Down the nearest child entered until a leaf, as a single ray goes (traverse_leaves).
         bool missed = false;
         while (current.count == 0) {
-            // The interval test picks the children some ray may enter; each ray's own test
-            // then says which do, so a subtree is walked for its rays only (near the rays'
-            // origins, where feelers start among small boxes, the interval alone admits
-            // many that none enters).
             const Node& node = nodes_[current.child];
-            Float t_enter;
+            typename Lanes<N>::Float t_enter;
             std::array<unsigned, N> entering;
-            unsigned mask = 0;
-            for (unsigned m = boxes.test(node, largest, t_enter); m != 0; m &= m - 1) {
-                const int lane = __builtin_ctz(m);
-                entering[lane] = node.count[lane] == 0 && boxes.one_origin
-                                     ? current.rays
-                                     : boxes.rays_entering(node, lane, limits) & current.rays;
-                if (entering[lane] != 0) mask |= 1u << lane;
-            }
+            unsigned mask =
+                detail::children_entered<N>(boxes, node, current.rays, limits, t_enter, entering);
             if (mask == 0) {
                 missed = true;
                 break;
@@ -197,14 +222,14 @@ void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
                     active &= ~hit;
                     if (active == 0) return;
                 }
-                update_limits();
+                limits.update(t_max, active);
             }
         }
         do {
             if (top == 0) return;
             current = stack[--top];
             current.rays &= active;
-        } while (current.rays == 0 || current.t_enter >= largest);
+        } while (current.rays == 0 || current.t_enter >= limits.largest);
     }
 }
 
