@@ -8,8 +8,8 @@
 // against each ray's own box test (the rays as the lanes), and the child is walked for
 // the rays that enter it only: its triangles are tested by exactly the rays that would
 // test them alone. Each ray ends with the hit it would find alone. (Where the rays share
-// their origin, a camera's, the interval is tight and the rays' own test is left to the
-// leaves.)
+// their origin, a camera's, the interval is tight: a leaf it admits skips the rays' own
+// box test, and the triangle tests decide.)
 //
 // Rays whose direction signs differ on some axis, or with a zero component, make no
 // useful interval: such a packet is traced a ray at a time (WideBvh::traverse_leaves).
@@ -30,7 +30,7 @@ struct PacketBoxes {
     // is measured from (the largest coordinate where the rays go up the axis, else the
     // smallest), the one a far plane is, and the inverse directions' range.
     Float entry_origin[3], exit_origin[3], inv_lo[3], inv_hi[3];
-    // The rays themselves, a lane each, for the leaves' test.
+    // The rays themselves, a lane each, for each ray's own test.
     Float inv[3], origin[3];
     int near[3], far[3];
     bool one_origin = true;  // the rays share their origin (a camera's): the interval is tight
