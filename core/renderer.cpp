@@ -52,20 +52,19 @@ using detail::Tile;
 using detail::tile_count;
 using detail::TileRunner;
 
-// The first hit along a camera ray, from the item buffer where it can be trusted.
-Hit primary_hit(const Scene& scene, const Ray& ray, const ItemBuffer* ib, int x, int y,
+// The first hit along a camera ray, from the item buffer where it can be trusted, else
+// (counted in `fell_back`) from the scene.
+Hit primary_hit(const Scene& scene, const Ray& ray, const ItemBuffer& ib, int x, int y,
                 bool& fell_back) {
     Hit hit;
-    if (ib) {
-        const std::size_t i = ib->index(x, y);
-        const std::uint32_t id = ib->object[i];
-        if (ib->interior(x, y)) {
-            if (id == ItemBuffer::kEmpty) return hit;  // nothing here nor around it
-            if (scene.intersect_primitive(id - 1, ib->prim[i], ray, hit)) return hit;
-        }
-        fell_back = true;
-        hit = Hit{};
+    const std::size_t i = ib.index(x, y);
+    const std::uint32_t id = ib.object[i];
+    if (ib.interior(x, y)) {
+        if (id == ItemBuffer::kEmpty) return hit;  // nothing here nor around it
+        if (scene.intersect_primitive(id - 1, ib.prim[i], ray, hit)) return hit;
     }
+    fell_back = true;
+    hit = Hit{};
     scene.intersect(ray, hit);
     return hit;
 }
@@ -162,7 +161,7 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
                 for (int y = t.y0, i = 0; y < t.y1; ++y) {
                     for (int x = t.x0; x < t.x1; ++x, ++i) {
                         bool fell_back = false;
-                        hits[i] = primary_hit(p.scene, rays[i], p.item_buffer, x, y, fell_back);
+                        hits[i] = primary_hit(p.scene, rays[i], *p.item_buffer, x, y, fell_back);
                         fell += fell_back;
                     }
                 }
