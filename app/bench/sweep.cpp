@@ -58,13 +58,43 @@ void write_plot(const SweepOptions& o, const std::vector<Row>& rows) {
         std::printf("no plot: gnuplot is missing or failed (the CSV is there)\n");
 }
 
+// Each structure's passes alternate with the others': round k times one pass of each
+// (after its warm-up), and each reports its median over the rounds. This machine's load
+// changes within seconds; timing one structure's passes and then the next's put that
+// change into their ratio (the 1M-triangle row gave bvh/embree 1.05x to 1.45x in three
+// runs so). The ratio to Embree is printed beside each row.
+std::vector<double> alternating_ns(const std::vector<std::unique_ptr<Structure>>& structures,
+                                   const RaySet& rays, std::size_t triangles,
+                                   const MeasureOptions& measure) {
+    MeasureOptions one = measure;
+    one.repeats = 1;
+    std::vector<std::vector<double>> ns(structures.size());
+    for (int round = 0; round < std::max(1, measure.repeats); ++round) {
+        for (std::size_t i = 0; i < structures.size(); ++i) {
+            const Structure& s = *structures[i];
+            const double tests =
+                static_cast<double>(rays.rays.size()) * static_cast<double>(triangles);
+            const std::size_t stride =
+                s.name() == "brute"
+                    ? std::max<std::size_t>(1, static_cast<std::size_t>(tests / measure.brute_budget))
+                    : 1;
+            std::vector<Result> answers;
+            const SetTiming t = time_set(s, rays, stride, one, answers);
+            ns[i].push_back(1e9 * t.seconds / static_cast<double>(t.rays));
+        }
+    }
+    std::vector<double> medians;
+    for (auto& v : ns) medians.push_back(median(std::move(v)));
+    return medians;
+}
+
 }  // namespace
 
 int run_sweep(const SweepOptions& o) {
     std::ofstream csv(o.csv);
     if (!csv) throw rt::Error(o.csv, "csv", "cannot write the file");
-    csv << "triangles,structure,ns_per_ray,build_seconds,memory_bytes\n";
-    std::printf("%10s %-8s %12s %10s\n", "triangles", "", "ns/ray", "build s");
+    csv << "triangles,structure,ns_per_ray,build_seconds,memory_bytes,ratio_to_embree\n";
+    std::printf("%10s %-8s %12s %10s %10s\n", "triangles", "", "ns/ray", "build s", "x embree");
     std::vector<Row> rows;
     for (int wanted : o.triangle_counts) {
         const rt::TriangleMesh sphere = rt::tessellate_unit_sphere(slices_for(wanted));
@@ -76,26 +106,26 @@ int run_sweep(const SweepOptions& o) {
                                 rt::AccelKind::kBvh})
             structures.push_back(make_ours(k, o.measure.threads));
         if (auto embree = make_embree(o.measure.threads)) structures.push_back(std::move(embree));
+        std::vector<double> build;
         for (auto& s : structures) {
             s->prepare(sphere);
             const rt::Stopwatch watch;
             s->build();
-            const double build = watch.seconds();
-            const double tests = static_cast<double>(primary.rays.size()) *
-                                 static_cast<double>(sphere.triangles.size());
-            const std::size_t stride =
-                s->name() == "brute"
-                    ? std::max<std::size_t>(
-                          1, static_cast<std::size_t>(tests / o.measure.brute_budget))
-                    : 1;
-            std::vector<Result> answers;
-            const SetTiming t = time_set(*s, primary, stride, o.measure, answers);
-            const double ns = 1e9 * t.seconds / static_cast<double>(t.rays);
-            rows.push_back({sphere.triangles.size(), s->name(), ns});
-            csv << sphere.triangles.size() << ',' << s->name() << ',' << ns << ',' << build << ','
-                << s->memory_bytes() << '\n';
-            std::printf("%10zu %-8s %12.1f %10.4f\n", sphere.triangles.size(), s->name().c_str(),
-                        ns, build);
+            build.push_back(watch.seconds());
+        }
+        const std::vector<double> ns =
+            alternating_ns(structures, primary, sphere.triangles.size(), o.measure);
+        const double embree = structures.back()->name() == "embree" ? ns.back() : 0.0;
+        for (std::size_t i = 0; i < structures.size(); ++i) {
+            const Structure& s = *structures[i];
+            const double ratio = embree > 0.0 ? ns[i] / embree : 0.0;
+            rows.push_back({sphere.triangles.size(), s.name(), ns[i]});
+            csv << sphere.triangles.size() << ',' << s.name() << ',' << ns[i] << ',' << build[i]
+                << ',' << s.memory_bytes() << ',' << ratio << '\n';
+            std::printf("%10zu %-8s %12.1f %10.4f", sphere.triangles.size(), s.name().c_str(),
+                        ns[i], build[i]);
+            if (ratio > 0.0) std::printf(" %9.2fx", ratio);  // none without Embree
+            std::printf("\n");
         }
     }
     csv.close();

@@ -35,6 +35,10 @@ check "  ... and wrong GPU answers fail, naming it" grep -q "WRONG: gpu" "$out/f
 check "sweep runs" test $? -eq 0
 check "  ... and writes a row per count and structure" test "$(grep -c '^[0-9]' "$out/sweep.csv")" -ge 8
 check "  ... and a plot" test -s "$out/sweep.png"
+if grep -q ',embree,' "$out/sweep.csv"; then
+  check "  ... and each row's time relative to Embree's (Embree's own: 1)" \
+    awk -F, 'NR > 1 && $2 == "embree" && $6 != 1 { bad = 1 } NR > 1 && NF != 6 { bad = 1 } END { exit bad }' "$out/sweep.csv"
+fi
 
 "$rtbench" --item-buffer "$assets/scenes/tutorial.json" --size 160x120 --repeats 1 >"$out/ib.log" 2>&1
 check "item-buffer demo runs (exit 0: images agree)" test $? -eq 0
