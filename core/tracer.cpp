@@ -131,8 +131,10 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool
     return colour;
 }
 
-bool Tracer::visible(const vec3& p, const SurfacePoint& sp, const Light& light,
-                     RayCounts& counts) const {
+// Inlined into phong, its only caller: the call itself (its arguments, the registers it
+// saves) cost as much as the checks around the feeler (callgrind, whitted 640 x 360).
+[[gnu::always_inline]] inline bool Tracer::visible(const vec3& p, const SurfacePoint& sp,
+                                                   const Light& light, RayCounts& counts) const {
     vec3 dir;
     const float t_max = light.feeler(p, dir);
     if (glm::dot(dir, sp.geometric_normal) <= 0.0f) {

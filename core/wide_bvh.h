@@ -19,6 +19,11 @@
 
 namespace rt {
 
+namespace detail {
+template <int N>
+struct BoxRay;
+}  // namespace detail
+
 template <int N>
 struct alignas(64) WideBvhNode {
     using Float = typename Lanes<N>::Float;
@@ -77,6 +82,11 @@ class WideBvh {
     }
 
   private:
+    // A tree of one node (a scene of up to N objects): its leaves the ray enters, in lane
+    // order, without the stack (any hit: the order does not change the answer).
+    template <class HitLeaf>
+    bool any_hit_in_root(const detail::BoxRay<N>& box_ray, float& t_max, HitLeaf& hit_leaf) const;
+
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> prims_;
     Aabb bounds_;
@@ -144,6 +154,9 @@ template <bool kAnyHit, class HitLeaf>
 bool WideBvh<N>::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
     if (nodes_.empty() || !finite_ray(ray)) return false;
     const detail::BoxRay<N> box_ray(ray);
+    if constexpr (kAnyHit) {
+        if (nodes_.size() == 1) return any_hit_in_root(box_ray, t_max, hit_leaf);
+    }
     struct Pending {
         std::uint32_t child, count;  // count 0: a node
         float t_enter;               // skipped unvisited if a hit since is nearer
@@ -187,6 +200,19 @@ bool WideBvh<N>::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_lea
         }
         if (!pop(current)) return found;
     }
+}
+
+template <int N>
+template <class HitLeaf>
+bool WideBvh<N>::any_hit_in_root(const detail::BoxRay<N>& box_ray, float& t_max,
+                                 HitLeaf& hit_leaf) const {
+    const Node& root = nodes_[0];
+    typename Lanes<N>::Float t_enter;
+    for (unsigned mask = box_ray.test(root, t_max, t_enter); mask != 0; mask &= mask - 1) {
+        const int lane = __builtin_ctz(mask);
+        if (hit_leaf(root.child[lane], root.count[lane], t_max)) return true;
+    }
+    return false;
 }
 
 template <int N>

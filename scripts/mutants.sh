@@ -231,6 +231,10 @@ mutant packet-skips-a-child core/wide_bvh_packet.h \
     'for (mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
     'for (mask &= mask - 1, mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
     rt_tests $(unit 'EveryKind/PacketTest.*:ScenePackets.*')
+mutant root-any-hit-skips-lane-0 core/wide_bvh.h \
+    'mask = box_ray.test(root, t_max, t_enter); mask != 0' \
+    'mask = box_ray.test(root, t_max, t_enter) & ~1u; mask != 0' \
+    rt_tests $(unit '*SmallScenesOccludeAsTestingEveryObject*')
 mutant packet-mesh-sees-world-rays core/scene.cpp \
     'intersect_packet(local.data(), hits, lanes)' 'intersect_packet(rays, hits, lanes)' \
     rt_tests $(unit 'ScenePackets.*')

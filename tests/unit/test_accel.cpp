@@ -96,6 +96,33 @@ TEST_P(AccelTest, SceneHitsMatchTestingEveryObject) {
     }
 }
 
+// Scenes of up to eight objects: the wide BVH over them is one node, whose leaves a
+// shadow feeler visits without the stack (WideBvh::any_hit_in_root). Each object may
+// block, and each may be the only one within the feeler's limit.
+TEST_P(AccelTest, SmallScenesOccludeAsTestingEveryObject) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> radius(0.5f, 2.0f), limit(0.1f, 30.0f);
+    for (int objects = 1; objects <= 9; ++objects) {
+        SceneDescription desc;
+        desc.materials.push_back(Material{});
+        for (int i = 0; i < objects; ++i)
+            desc.objects.push_back(
+                Object{"s", Sphere{random_point(rng, 6.0f), radius(rng)}, 0, {}});
+        const Scene scene(std::move(desc), GetParam());
+        for (int i = 0; i < 2000; ++i) {
+            const Ray ray{random_point(rng, 9.0f), random_point(rng, 1.0f)};
+            const float t_max = i % 2 ? kInfinity : limit(rng);
+            bool blocked = false;
+            for (std::uint32_t o = 0; o < scene.objects.size(); ++o) {
+                Hit h;
+                h.t = t_max;
+                blocked |= scene.intersect_object(o, ray, h);
+            }
+            ASSERT_EQ(scene.occluded(ray, t_max), blocked) << objects << " objects, ray " << i;
+        }
+    }
+}
+
 // Axis-aligned rays, rays from inside the bounds and flat scenes are where grids and
 // slab tests go wrong.
 TEST_P(AccelTest, FlatSceneAndAxisAlignedRays) {
