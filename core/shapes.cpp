@@ -39,15 +39,6 @@ std::optional<float> intersect(const Sphere& s, const Ray& r, float t_max) {
     return std::nullopt;
 }
 
-std::optional<float> intersect(const Plane& p, const Ray& r, float t_max) {
-    // t = (a - eye.n) / (d.n); a ray parallel to the plane never meets it.
-    const float d_dot_n = glm::dot(r.dir, p.normal);
-    if (d_dot_n == 0.0f) return std::nullopt;
-    const float t = (p.offset - glm::dot(r.origin, p.normal)) / d_dot_n;
-    if (t > 0.0f && t < t_max) return t;
-    return std::nullopt;
-}
-
 std::optional<TriangleHit> intersect_triangle(const vec3& a, const vec3& b, const vec3& c,
                                               const Ray& r, float t_max) {
     const vec3 n = glm::cross(b - a, c - a);
@@ -67,20 +58,7 @@ std::optional<TriangleHit> intersect_triangle(const vec3& a, const vec3& b, cons
 }
 
 // --- each shape's part of the scene's questions --------------------------------------
-namespace {
-
-// A sphere or plane has no triangle: the whole record is replaced, so no earlier mesh
-// hit's triangle and barycentrics stay behind.
-template <class Analytic>
-bool replace_hit(const Analytic& shape, const Ray& r, Hit& hit) {
-    const auto t = rt::intersect(shape, r, hit.t);
-    if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};
-    return t.has_value();
-}
-
-}  // namespace
-
-bool Sphere::intersect(const Ray& r, Hit& hit) const { return replace_hit(*this, r, hit); }
+bool Sphere::intersect(const Ray& r, Hit& hit) const { return detail::replace_hit(*this, r, hit); }
 
 bool Sphere::occluded(const Ray& r, float t_max) const {
     return rt::intersect(*this, r, t_max).has_value();
@@ -91,12 +69,6 @@ LocalSurface Sphere::surface(const Ray& r, const Hit& hit) const {
     // the ray offset relies on.
     const vec3 n = glm::normalize(r.at(hit.t) - centre);
     return LocalSurface{centre + radius * n, n, n, std::nullopt, glm::vec2(0.0f), vec3(1.0f)};
-}
-
-bool Plane::intersect(const Ray& r, Hit& hit) const { return replace_hit(*this, r, hit); }
-
-bool Plane::occluded(const Ray& r, float t_max) const {
-    return rt::intersect(*this, r, t_max).has_value();
 }
 
 LocalSurface Plane::surface(const Ray& r, const Hit& hit) const {

@@ -103,7 +103,33 @@ struct SphereRoots {
 SphereRoots solve_sphere(const Sphere& s, const Ray& r);
 std::optional<float> intersect(const Sphere& s, const Ray& r, float t_max);
 
-std::optional<float> intersect(const Plane& p, const Ray& r, float t_max);
+// Inline, as the plane's questions below: every ray of a scene with a floor asks them.
+inline std::optional<float> intersect(const Plane& p, const Ray& r, float t_max) {
+    // t = (a - eye.n) / (d.n); a ray parallel to the plane never meets it.
+    const float d_dot_n = glm::dot(r.dir, p.normal);
+    if (d_dot_n == 0.0f) return std::nullopt;
+    const float t = (p.offset - glm::dot(r.origin, p.normal)) / d_dot_n;
+    if (t > 0.0f && t < t_max) return t;
+    return std::nullopt;
+}
+
+namespace detail {
+// A sphere or plane has no triangle: the whole record is replaced, so no earlier mesh
+// hit's triangle and barycentrics stay behind.
+template <class Analytic>
+bool replace_hit(const Analytic& shape, const Ray& r, Hit& hit) {
+    const auto t = rt::intersect(shape, r, hit.t);
+    if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};
+    return t.has_value();
+}
+}  // namespace detail
+
+inline bool Plane::intersect(const Ray& r, Hit& hit) const {
+    return detail::replace_hit(*this, r, hit);
+}
+inline bool Plane::occluded(const Ray& r, float t_max) const {
+    return rt::intersect(*this, r, t_max).has_value();
+}
 
 struct TriangleHit {
     float t;
