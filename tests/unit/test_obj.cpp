@@ -103,6 +103,19 @@ TEST(Obj, BadFilesGiveLocatedErrors) {
     expect_obj_error("empty", "", "faces", "no faces, lines or points");
 }
 
+// The line check splits tokens as a stream's >> does: tabs, runs of spaces and the CR of
+// CRLF lines separate them and are no part of them.
+TEST(Obj, TabsRunsOfSpacesAndCrlfSeparateTokens) {
+    const auto dir = test::temp_dir("obj_space");
+    const auto path = test::write_file(
+        dir / "ok.obj", "v\t0  0\t\t0\r\nv 1 0 0 \r\nv   0 1 0\r\nf 1\t2   3\r\n");
+    EXPECT_EQ(load_obj(path).mesh.triangles.size(), 1u);
+    expect_obj_error("crlf_nan", "v 0 0 0\r\nv 1\tnan\t0\r\nv 0 1 0\r\nf 1 2 3\r\n", "line 2",
+                     "coordinate \"nan\" is not a finite");
+    expect_obj_error("crlf_index", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 x\r\n", "line 4",
+                     "face vertex \"x\" is not an index");
+}
+
 // A byte-order mark before the first line (some Windows editors write one) is skipped:
 // the mtllib on that line still names the materials.
 TEST(Obj, ByteOrderMarkIsSkippedInObjAndMtl) {
