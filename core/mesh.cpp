@@ -393,18 +393,33 @@ void compute_corner_normals(TriangleMesh& mesh, float crease_degrees) {
     std::vector<Direction> dirs;
     std::unordered_map<vec3, std::uint32_t, Vec3Hash> dir_of;
     std::vector<std::uint32_t> corner_dir;
+    // A direction's index, a new one for a unit normal not seen at this vertex. Most
+    // vertices have a handful of faces: a search of the few directions beats a hash map,
+    // whose node a face cost an allocation (the map, for the rest, finds the same: its
+    // keys compare with ==, and +0 and -0 hash alike).
+    constexpr std::uint32_t kSearchedFaces = 32;
+    const auto direction_of = [&](const vec3& u, bool searched) {
+        const auto next = static_cast<std::uint32_t>(dirs.size());
+        if (searched) {
+            for (std::uint32_t d = 0; d < next; ++d)
+                if (dirs[d].unit == u) return d;
+        } else if (const auto [it, added] = dir_of.try_emplace(u, next); !added) {
+            return it->second;
+        }
+        dirs.push_back({u, vec3(0.0f), vec3(0.0f)});
+        return next;
+    };
     for (std::uint32_t v = 0; v + 1 < start.size(); ++v) {
         if (start[v] == start[v + 1]) continue;
+        const bool searched = start[v + 1] - start[v] <= kSearchedFaces;
         dirs.clear();
-        dir_of.clear();
+        if (!searched) dir_of.clear();
         corner_dir.clear();
         for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
             const std::uint32_t t = faces_at[i];
-            const auto [it, added] =
-                dir_of.try_emplace(unit[t], static_cast<std::uint32_t>(dirs.size()));
-            if (added) dirs.push_back({unit[t], vec3(0.0f), vec3(0.0f)});
-            dirs[it->second].sum += face[t];  // length = 2 x area: area weighting
-            corner_dir.push_back(it->second);
+            const std::uint32_t d = direction_of(unit[t], searched);
+            dirs[d].sum += face[t];  // length = 2 x area: area weighting
+            corner_dir.push_back(d);
         }
         const bool flat = dirs.size() > kMaxDirections;
         for (Direction& own : dirs) {

@@ -1,6 +1,9 @@
 // OBJ + MTL through tinyobjloader: triangulation, normals, materials, and located errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
@@ -41,6 +44,39 @@ TEST(Obj, MissingNormalsAreComputedSmoothButCreased) {
         const vec3 face = glm::normalize(obj.mesh.face_normal(t));
         for (int k = 0; k < 3; ++k)
             EXPECT_NEAR(glm::dot(obj.mesh.corner_normals[3 * t + k], face), 1.0f, 1e-5f);
+    }
+}
+
+// Around a cone's apex each corner's normal is the area-weighted sum of the faces there
+// within the crease angle of its own, normalised: with a few faces (the directions
+// searched) and with many (a hash map of them) alike. Half the slices are repeated
+// (the same direction twice), so directions are merged.
+TEST(Obj, ConeApexNormalsSumTheFacesWithinTheCrease) {
+    for (int slices : {6, 20, 40, 100}) {
+        TriangleMesh mesh;
+        mesh.positions.push_back({0.0f, 3.0f, 0.0f});  // the apex of a tall cone
+        for (int i = 0; i < slices; ++i) {
+            const float a = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / slices;
+            mesh.positions.push_back({std::cos(a), 0.0f, std::sin(a)});
+        }
+        for (int i = 0; i < slices; ++i) {
+            const auto b = static_cast<std::uint32_t>(1 + i);
+            const auto c = static_cast<std::uint32_t>(1 + (i + 1) % slices);
+            mesh.triangles.push_back({0, c, b});
+            if (i % 2 == 0) mesh.triangles.push_back({0, c, b});
+        }
+        compute_corner_normals(mesh, 60.0f);
+        const float cos_crease = std::cos(60.0f * std::numbers::pi_v<float> / 180.0f);
+        for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+            const vec3 own = glm::normalize(mesh.face_normal(t));
+            vec3 sum(0.0f);
+            for (std::uint32_t u = 0; u < mesh.triangles.size(); ++u)
+                if (glm::dot(own, glm::normalize(mesh.face_normal(u))) >= cos_crease)
+                    sum += mesh.face_normal(u);
+            const vec3 expected = glm::normalize(sum), got = mesh.corner_normals[3 * t];
+            EXPECT_NEAR(glm::distance(got, expected), 0.0f, 1e-5f)
+                << slices << " slices, face " << t;
+        }
     }
 }
 
@@ -107,8 +143,8 @@ TEST(Obj, BadFilesGiveLocatedErrors) {
 // CRLF lines separate them and are no part of them.
 TEST(Obj, TabsRunsOfSpacesAndCrlfSeparateTokens) {
     const auto dir = test::temp_dir("obj_space");
-    const auto path = test::write_file(
-        dir / "ok.obj", "v\t0  0\t\t0\r\nv 1 0 0 \r\nv   0 1 0\r\nf 1\t2   3\r\n");
+    const auto path =
+        test::write_file(dir / "ok.obj", "v\t0  0\t\t0\r\nv 1 0 0 \r\nv   0 1 0\r\nf 1\t2   3\r\n");
     EXPECT_EQ(load_obj(path).mesh.triangles.size(), 1u);
     expect_obj_error("crlf_nan", "v 0 0 0\r\nv 1\tnan\t0\r\nv 0 1 0\r\nf 1 2 3\r\n", "line 2",
                      "coordinate \"nan\" is not a finite");
