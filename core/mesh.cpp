@@ -1,8 +1,10 @@
 #include "core/mesh.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <optional>
 #include <unordered_map>
 #include <unordered_set>
@@ -302,11 +304,34 @@ struct Vec3Hash {
     }
 };
 
+// Each position's first index among the positions equal to it (==: +0 and -0 alike, a
+// NaN equal to nothing). By sorting the indices by position, ties by index, so each run of
+// equal positions starts with its first; a hash map of positions cost a node allocation
+// each (callgrind, the bunny: 27.7 M instructions a call against 12.2 M). With a NaN, which
+// sorts nowhere, the map.
 std::vector<std::uint32_t> weld_positions(const std::vector<vec3>& positions) {
-    std::unordered_map<vec3, std::uint32_t, Vec3Hash> first;
     std::vector<std::uint32_t> weld(positions.size());
-    for (std::uint32_t i = 0; i < positions.size(); ++i)
-        weld[i] = first.try_emplace(positions[i], i).first->second;
+    const auto nan = [](const vec3& p) { return std::isnan(p.x + p.y + p.z); };
+    if (std::any_of(positions.begin(), positions.end(), nan)) {
+        std::unordered_map<vec3, std::uint32_t, Vec3Hash> first;
+        for (std::uint32_t i = 0; i < positions.size(); ++i)
+            weld[i] = first.try_emplace(positions[i], i).first->second;
+        return weld;
+    }
+    std::vector<std::uint32_t> order(positions.size());
+    std::iota(order.begin(), order.end(), 0u);
+    const auto less = [&](std::uint32_t a, std::uint32_t b) {
+        const vec3 &p = positions[a], &q = positions[b];
+        if (p.x != q.x) return p.x < q.x;
+        if (p.y != q.y) return p.y < q.y;
+        if (p.z != q.z) return p.z < q.z;
+        return a < b;
+    };
+    std::sort(order.begin(), order.end(), less);
+    for (std::size_t k = 0, run = 0; k < order.size(); ++k) {
+        if (positions[order[k]] != positions[order[run]]) run = k;
+        weld[order[k]] = order[run];
+    }
     return weld;
 }
 

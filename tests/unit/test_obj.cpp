@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <glm/geometric.hpp>
@@ -273,6 +274,26 @@ TEST(Obj, RepeatedFacesAreDroppedWindingKept) {
     ASSERT_EQ(mesh.triangles.size(), 2u);
     EXPECT_EQ(mesh.triangles[1], glm::uvec3(2, 1, 0));
     EXPECT_EQ(mesh.materials, (std::vector<std::uint32_t>{5, 7}));
+}
+
+// Positions weld by ==: -0 is 0, so a face over the negative zeros repeats one over the
+// zeros; the first of equal positions in any order; a NaN position (no loader lets one
+// through, but a mesh built in code may) welds to nothing and breaks nothing.
+TEST(Obj, PositionsWeldAsEqualNumbers) {
+    TriangleMesh mesh;
+    mesh.positions = {vec3(1, 0, 0), vec3(0, 1, 0), vec3(-0.0f, 0, -0.0f),
+                      vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0)};
+    mesh.triangles = {{3, 0, 1}, {2, 4, 5}, {0, 5, 2}};
+    EXPECT_EQ(drop_duplicate_triangles(mesh), 2u);
+    ASSERT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_EQ(mesh.triangles[0], glm::uvec3(3, 0, 1));
+
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    mesh.positions = {vec3(0, 0, 0),   vec3(1, 0, 0), vec3(0, 1, 0),
+                      vec3(nan, 0, 0), vec3(0, 0, 0), vec3(nan, 0, 0)};
+    mesh.triangles = {{0, 1, 2}, {4, 1, 2}, {3, 1, 2}, {5, 1, 2}};
+    EXPECT_EQ(drop_duplicate_triangles(mesh), 1u);  // {4,1,2}; the NaN faces are distinct
+    EXPECT_EQ(mesh.triangles.size(), 3u);
 }
 
 }  // namespace
