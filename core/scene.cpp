@@ -117,14 +117,57 @@ unsigned Scene::intersect_object_packet(std::uint32_t object, const Ray* rays, H
     return found;
 }
 
+namespace {
+
+// The plane's test (intersect(const Plane&, ...)) for the rays of `lanes` at once, the
+// rays as the lanes: the same arithmetic in the same order, so each ray gets the t its
+// own test gives. Returns the lanes whose hit replaced their record.
+unsigned plane_packet(const Plane& p, std::uint32_t object, const Ray* rays, Hit* hits,
+                      unsigned lanes) {
+    using Float = Lanes<kPacketWidth>::Float;
+    const int first = __builtin_ctz(lanes);
+    Float d_dot_n, o_dot_n, t_max;  // glm::dot's order: (x + y) + z
+    for (int a = 0; a < 3; ++a) {
+        Float o, d;
+        for (int lane = 0; lane < kPacketWidth; ++lane) {
+            const Ray& r = rays[(lanes >> lane) & 1u ? lane : first];
+            o[lane] = r.origin[a];
+            d[lane] = r.dir[a];
+        }
+        d_dot_n = a == 0 ? d * p.normal[a] : d_dot_n + d * p.normal[a];
+        o_dot_n = a == 0 ? o * p.normal[a] : o_dot_n + o * p.normal[a];
+    }
+    for (int lane = 0; lane < kPacketWidth; ++lane)
+        t_max[lane] = hits[(lanes >> lane) & 1u ? lane : first].t;
+    const Float zero = splat<Float>(0.0f);
+    const Float t = (splat<Float>(p.offset) - o_dot_n) / d_dot_n;
+    const unsigned hit = bits((d_dot_n != zero) & (t > zero) & (t < t_max)) & lanes;
+    for (unsigned rest = hit; rest != 0; rest &= rest - 1) {
+        const unsigned lane = __builtin_ctz(rest);
+        hits[lane] = Hit{t[lane], object, 0, 0.0f, 0.0f};
+    }
+    return hit;
+}
+
+}  // namespace
+
 unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) const {
     active &= (1u << kPacketWidth) - 1u;
     unsigned found = 0;
     std::array<float, kPacketWidth> t_max;
+    for (std::uint32_t i : unbounded_) {
+        const Object& o = objects[i];
+        if (const auto* plane = std::get_if<Plane>(&o.shape); plane && !o.transform && active) {
+            found |= plane_packet(*plane, i, rays, hits, active);
+            continue;
+        }
+        for (unsigned rest = active; rest != 0; rest &= rest - 1) {
+            const unsigned lane = __builtin_ctz(rest);
+            if (intersect_object(i, rays[lane], hits[lane])) found |= 1u << lane;
+        }
+    }
     for (unsigned rest = active; rest != 0; rest &= rest - 1) {
         const unsigned lane = __builtin_ctz(rest);
-        for (std::uint32_t i : unbounded_)
-            if (intersect_object(i, rays[lane], hits[lane])) found |= 1u << lane;
         t_max[lane] = hits[lane].t;
     }
     top_.traverse_packet<false>(

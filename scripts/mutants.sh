@@ -234,6 +234,9 @@ mutant packet-skips-a-child core/wide_bvh_packet.h \
 mutant corner-normals-search-merges-directions core/mesh.cpp \
     'if (dirs[d].unit == u) return d;' 'if (glm::dot(dirs[d].unit, u) > 0.5f) return d;' \
     rt_tests $(unit 'Obj.*')
+mutant plane-packet-ignores-the-limit core/scene.cpp \
+    '(t > zero) & (t < t_max)' '(t > zero)' \
+    rt_tests $(unit 'ScenePackets.*')
 mutant root-any-hit-skips-lane-0 core/wide_bvh.h \
     'mask = box_ray.test(root, t_max, t_enter); mask != 0' \
     'mask = box_ray.test(root, t_max, t_enter) & ~1u; mask != 0' \

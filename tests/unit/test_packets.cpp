@@ -7,10 +7,12 @@
 #include <random>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/mesh.h"
 #include "core/scene.h"
 #include "core/tessellate.h"
+#include "core/transform.h"
 #include "core/triangle_packet.h"
 #include "test_util.h"
 
@@ -150,6 +152,50 @@ TEST_P(PacketTest, EveryFeelerIsBlockedExactlyWhenItIsAlone) {
 // A whole scene's packets (planes, spheres, triangles, meshes under transforms, through
 // the objects' BVH and each mesh's): each camera ray in a packet of its row's neighbours
 // finds what Scene::intersect finds for it alone.
+// Planes (tested for every ray, across the packet where untransformed) give each ray the
+// record it gets alone: several planes one after the other, each within the limit the
+// ones before left; a ray's own starting limit; a transformed plane (ray by ray);
+// partial packets; rays parallel to a plane.
+TEST(ScenePackets, PlanesGiveEachRayItsOwnHit) {
+    SceneDescription desc;
+    desc.materials.push_back(Material{});
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -1}, 0, {}});
+    desc.objects.push_back(Object{"ceiling", Plane{{0, -1, 0}, -4}, 0, {}});
+    desc.objects.push_back(Object{"wall", Plane{glm::normalize(vec3(1, 0, 1)), -3}, 0, {}});
+    desc.objects.push_back(
+        Object{"tilted", Plane{{0, 0, 1}, 0}, 0,
+               Transform::from_matrix(glm::rotate(glm::translate(glm::mat4(1.0f), vec3(0, 0, -5)),
+                                                  0.3f, vec3(1, 0, 0)))});
+    desc.objects.push_back(Object{"ball", Sphere{{0.5f, 0, -2}, 0.7f}, 0, {}});
+    const Scene scene(std::move(desc));
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), limit(0.5f, 20.0f);
+    int hits = 0;
+    for (int i = 0; i < 4000; ++i) {
+        Packet rays;
+        std::array<Hit, kW> together, alone;
+        for (int k = 0; k < kW; ++k) {
+            vec3 dir(u(rng), u(rng), u(rng));
+            if (k == 3) dir.y = 0.0f;  // parallel to floor and ceiling
+            rays[k] = Ray{vec3(u(rng), u(rng), u(rng)), dir};
+            together[k] = alone[k] = Hit{};
+            if (i % 3 == 0) together[k].t = alone[k].t = limit(rng);
+        }
+        const unsigned active = i % 5 == 0 ? (rng() & ((1u << kW) - 1u)) : (1u << kW) - 1u;
+        const unsigned found = scene.intersect_packet(rays.data(), together.data(), active);
+        for (int k = 0; k < kW; ++k) {
+            if (!((active >> k) & 1u)) continue;
+            const bool hit = scene.intersect(rays[k], alone[k]);
+            ASSERT_EQ(((found >> k) & 1u) != 0, hit) << "packet " << i << " lane " << k;
+            ASSERT_EQ(together[k].t, alone[k].t) << "packet " << i << " lane " << k;
+            if (!hit) continue;
+            ++hits;
+            ASSERT_EQ(together[k].object, alone[k].object) << "packet " << i << " lane " << k;
+        }
+    }
+    EXPECT_GT(hits, 10000);
+}
+
 TEST(ScenePackets, EveryPixelGetsTheHitItGetsAlone) {
     for (const char* name :
          {"whitted.json", "cornell.json", "textured.json", "many_spheres.json"}) {
