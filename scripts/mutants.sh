@@ -168,7 +168,7 @@ mutant checker-parity-wrong core/material.h \
     'return sum == 0.0f ? colour_a : colour_b;' \
     rt_tests $(unit 'Checker.*')
 
-mutant stale-mesh-hit-kept core/shapes.cpp \
+mutant stale-mesh-hit-kept core/shapes.h \
     'if (t) hit = Hit{*t, hit.object, 0, 0.0f, 0.0f};' 'if (t) hit.t = *t;' \
     rt_tests $(unit 'Scene.*')
 mutant light-on-surface-nan core/tracer.cpp \
