@@ -57,7 +57,8 @@ TEST(Obj, ConeApexNormalsSumTheFacesWithinTheCrease) {
         TriangleMesh mesh;
         mesh.positions.push_back({0.0f, 3.0f, 0.0f});  // the apex of a tall cone
         for (int i = 0; i < slices; ++i) {
-            const float a = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / slices;
+            const float a = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) /
+                            static_cast<float>(slices);
             mesh.positions.push_back({std::cos(a), 0.0f, std::sin(a)});
         }
         for (int i = 0; i < slices; ++i) {
