@@ -176,7 +176,7 @@ mutant light-on-surface-nan core/tracer.cpp \
     rt_tests $(unit 'Phong.*')
 mutant near-light-behind-offset-dark core/tracer.cpp \
     'return glm::dot(from_surface, sp.geometric_normal) > 0.0f;' 'return false;' \
-    rt_tests $(unit 'Far.*')
+    rt_tests $(unit 'Far.*:Shadows.*')
 mutant egl-display-terminated-early app/gl/context_egl.cpp \
     'display_refs().release(display_);' 'eglTerminate(display_);' \
     rt_gl_tests "${gl[@]}" --gtest_filter='GlContexts.*'

@@ -355,5 +355,25 @@ TEST(Phong, LightOnTheSurfaceGivesAmbientNotNaN) {
     }
 }
 
+// A light above the surface but nearer to it than the feeler's offset (here 1000 units
+// out, 256 float steps are 0.016 units; the light is 0.005 above the floor): the feeler
+// from the offset point would run away from the light, so the true surface point decides,
+// and the light is in front of it: lit, as with no feelers.
+TEST(Shadows, ALightNearerThanTheFeelersOffsetStillLights) {
+    SceneDescription desc;
+    desc.ambient = vec3(0.0f);
+    desc.materials.push_back(test::plain(vec3(0.0f), vec3(0.8f)));
+    desc.lights.push_back(Light{Light::Type::kPoint, {0, 1000.005f, 0}, {}, vec3(1.0f)});
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 1000}, 0, {}});
+    const Scene scene(std::move(desc));
+    for (bool shadows : {true, false}) {
+        TraceOptions options;
+        options.shadows = shadows;
+        RayCounts counts;
+        const vec3 c = Tracer(scene, options).trace_primary(Ray{{0, 1001, 0}, {0, -1, 0}}, counts);
+        expect_colour(c, vec3(0.8f), 1e-3f);
+    }
+}
+
 }  // namespace
 }  // namespace rt
