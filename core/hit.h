@@ -34,6 +34,10 @@ struct SurfacePoint {
     vec3 pattern_point{0.0f};  // where a checker is evaluated (object space)
     glm::vec2 uv{0.0f};        // where a texture is sampled (core/texture.h)
     vec3 colour{1.0f};         // a mesh's vertex colour, multiplying ka and kd
+    // The object hit, where a ray leaving the point on the normal's side cannot meet it
+    // again (a plane or triangle, or a sphere's outside: convex, Shape::kConvex), so a
+    // shadow feeler need not test it; kNoObject for meshes and a sphere's inside.
+    std::uint32_t cannot_meet_again = kNoObject;
 };
 
 }  // namespace rt

@@ -75,6 +75,7 @@ struct TriangleMesh {
 // A mesh as one object of a scene sees it: the shape interface of core/shapes.h over a
 // shared TriangleMesh (Scene::visit_shape makes one from an object's MeshRef).
 struct MeshInstance {
+    static constexpr Convex kConvex = Convex::kNo;
     const TriangleMesh& mesh;
     bool own_materials = true;  // the mesh's per-triangle materials, else the object's
 

@@ -56,6 +56,15 @@ Scene::Scene(SceneDescription d, AccelKind kind)
     for (std::size_t slot = 0; slot < by_slot.size(); ++slot)
         by_slot[slot] = bounded_[top_.order()[slot]];
     bounded_ = std::move(by_slot);
+    std::vector<Aabb> slot_boxes;
+    for (const std::uint32_t object : bounded_)
+        slot_boxes.push_back(object_bounds(objects[object]));
+    for (const Light& light : lights) {
+        if (light.type == Light::Type::kPoint)
+            light_buffers_.emplace_back(std::in_place, light.position, slot_boxes);
+        else
+            light_buffers_.emplace_back();
+    }
 }
 
 SceneDescription Scene::description() const {
@@ -185,23 +194,46 @@ unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) co
     return found;
 }
 
+// Inlined into the feelers' paths: a plane's test is a few instructions, its call more.
+[[gnu::always_inline]] inline bool Scene::occluded_by(std::uint32_t object, const Ray& r,
+                                                      float t_max) const {
+    const Object& o = objects[object];
+    const Ray local = object_ray(o, r);
+    return visit_shape(o, [&](const auto& shape) { return shape.occluded(local, t_max); });
+}
+
 bool Scene::occluded(const Ray& r, float t_max) const {
-    const auto occluded_by = [&](const Object& o, float t_limit) {
-        const Ray local = object_ray(o, r);
-        return visit_shape(o, [&](const auto& shape) { return shape.occluded(local, t_limit); });
-    };
     for (std::uint32_t i : unbounded_)
-        if (occluded_by(objects[i], t_max)) return true;
+        if (occluded_by(i, r, t_max)) return true;
     return top_.traverse<true>(r, t_max, [&](std::uint32_t slot, float& t_limit) {
-        return occluded_by(objects[bounded_[slot]], t_limit);
+        return occluded_by(bounded_[slot], r, t_limit);
     });
+}
+
+bool Scene::occluded(const Ray& feeler, float t_max, std::size_t light,
+                     std::uint32_t leaving) const {
+    for (std::uint32_t i : unbounded_)
+        if (i != leaving && occluded_by(i, feeler, t_max)) return true;
+    const std::optional<LightBuffer>& buffer = light_buffers_[light];
+    const LightBuffer::Cell cell =
+        buffer && finite_ray(feeler) ? buffer->cell(feeler.origin) : LightBuffer::Cell{};
+    if (cell.crowded) {
+        return top_.traverse<true>(feeler, t_max, [&](std::uint32_t slot, float& t_limit) {
+            return bounded_[slot] != leaving && occluded_by(bounded_[slot], feeler, t_limit);
+        });
+    }
+    for (const std::uint32_t* slot = cell.begin; slot != cell.end; ++slot)
+        if (bounded_[*slot] != leaving && occluded_by(bounded_[*slot], feeler, t_max)) return true;
+    return false;
 }
 
 SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
     const Object& o = objects[hit.object];
     const Ray local = object_ray(o, r);
     SurfacePoint sp;
+    Convex convex = Convex::kNo;
     const LocalSurface ls = visit_shape(o, [&](const auto& shape) {
+        convex = std::decay_t<decltype(shape)>::kConvex;
         const LocalSurface s = shape.surface(local, hit);
         // A checker lies in the shape's own frame (a plane's), before the transform.
         sp.pattern_point = shape.pattern_point(s.p);
@@ -224,6 +256,8 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
     sp.p = p;
     const bool front_face = glm::dot(r.dir, ng) < 0.0f;
     sp.geometric_normal = front_face ? ng : -ng;
+    if (convex == Convex::kFlat || (convex == Convex::kOutside && front_face))
+        sp.cannot_meet_again = hit.object;
     // An interpolated normal may lean past the silhouette; keep it on the viewer's side.
     ns = front_face ? ns : -ns;
     sp.normal = glm::dot(ns, sp.geometric_normal) > 0.0f ? ns : sp.geometric_normal;

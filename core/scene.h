@@ -15,6 +15,7 @@
 #include "core/camera.h"
 #include "core/hit.h"
 #include "core/light.h"
+#include "core/light_buffer.h"
 #include "core/material.h"
 #include "core/mesh.h"
 #include "core/shapes.h"
@@ -85,6 +86,12 @@ class Scene {
     unsigned intersect_packet(const Ray* rays, Hit* hits, unsigned active) const;
     // Any hit in (0, t_max): the shadow feeler's question.
     bool occluded(const Ray& r, float t_max) const;
+    // The same for a feeler to lights[light] (Light::feeler) from a surface point of
+    // object `leaving` that the feeler cannot meet again (SurfacePoint::cannot_meet_again),
+    // which is not tested. A point light's feelers test the objects of their light
+    // buffer cell (core/light_buffer.h), not the tree.
+    bool occluded(const Ray& feeler, float t_max, std::size_t light,
+                  std::uint32_t leaving = kNoObject) const;
     // One object alone.
     bool intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const;
     // One object, and of a mesh one triangle alone: what the item buffer names.
@@ -112,9 +119,12 @@ class Scene {
     unsigned intersect_object_packet(std::uint32_t object, const Ray* rays, Hit* hits,
                                      unsigned lanes) const;
 
-    Accel top_;                             // over the bounded objects
-    std::vector<std::uint32_t> bounded_;    // traversal slot -> object
-    std::vector<std::uint32_t> unbounded_;  // planes: tested for every ray
+    bool occluded_by(std::uint32_t object, const Ray& r, float t_max) const;
+
+    Accel top_;                                              // over the bounded objects
+    std::vector<std::uint32_t> bounded_;                     // traversal slot -> object
+    std::vector<std::uint32_t> unbounded_;                   // planes: tested for every ray
+    std::vector<std::optional<LightBuffer>> light_buffers_;  // per light; point lights only
 };
 
 template <class... F>

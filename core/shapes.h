@@ -7,6 +7,9 @@
 //   surface(r, h)   the point and normals of a hit (LocalSurface);
 //   pattern_point() where a checker is evaluated for a point of the surface;
 //   triangle_count()
+//   kConvex         a ray leaving its outside cannot meet it again: kFlat, either side
+//                   (planes, triangles), kOutside (spheres, under any transform), or
+//                   kNo (meshes); shadow feelers skip the shape they leave where they can.
 // A mesh instance (core/mesh.h, MeshInstance) offers the same. The free intersect()
 // functions below are the tutorial's formulas, each returning the smallest t in
 // (0, t_max), or nothing. Adding a shape: docs/architecture.md.
@@ -30,6 +33,8 @@ void tangent_frame(const vec3& n, vec3& t1, vec3& t2);
 
 // A hit's surface in the shape's own space, before the object's transform. Normals
 // need not be unit length nor face the ray; Scene::surface does both.
+enum class Convex { kNo, kOutside, kFlat };
+
 struct LocalSurface {
     vec3 p{0.0f};
     vec3 geometric_normal{0.0f, 1.0f, 0.0f};
@@ -40,6 +45,7 @@ struct LocalSurface {
 };
 
 struct Sphere {
+    static constexpr Convex kConvex = Convex::kOutside;
     vec3 centre{0.0f};
     float radius = 1.0f;
 
@@ -56,6 +62,7 @@ struct Sphere {
 
 // The plane p . normal - offset = 0 (the tutorial's p . n - a = 0); normal is unit length.
 struct Plane {
+    static constexpr Convex kConvex = Convex::kFlat;
     vec3 normal{0.0f, 1.0f, 0.0f};
     float offset = 0.0f;
 
@@ -74,6 +81,7 @@ struct Plane {
 };
 
 struct Triangle {
+    static constexpr Convex kConvex = Convex::kFlat;
     vec3 a, b, c;
 
     Aabb bounds() const;

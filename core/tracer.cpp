@@ -146,7 +146,8 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool
         return glm::dot(from_surface, sp.geometric_normal) > 0.0f;
     }
     ++counts.shadow;
-    const bool blocked = scene_.occluded(Ray{p, dir}, t_max);
+    const auto index = static_cast<std::size_t>(&light - scene_.lights.data());
+    const bool blocked = scene_.occluded(Ray{p, dir}, t_max, index, sp.cannot_meet_again);
     if (recorder_) record_feeler(Ray{p, dir}, t_max, light, blocked);
     return !blocked;
 }

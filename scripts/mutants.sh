@@ -136,7 +136,8 @@ mutant gl-debug-not-installed app/gl/debug.cpp \
     'glDebugMessageCallback(on_debug_message, nullptr);' '(void)on_debug_message;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*ContextIsCoreProfile*'
 mutant shadow-feeler-dropped core/tracer.cpp \
-    'const bool blocked = scene_.occluded(Ray{p, dir}, t_max);' 'const bool blocked = false;' \
+    'const bool blocked = scene_.occluded(Ray{p, dir}, t_max, index, sp.cannot_meet_again);' \
+    'const bool blocked = false;' \
     rt_tests $(unit 'Shadows.*')
 mutant pixel-centre-off-by-half core/camera.h \
     'static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f' \
@@ -241,6 +242,23 @@ mutant root-any-hit-skips-lane-0 core/wide_bvh.h \
     'mask = box_ray.test(root, t_max, t_enter); mask != 0' \
     'mask = box_ray.test(root, t_max, t_enter) & ~1u; mask != 0' \
     rt_tests $(unit '*SmallScenesOccludeAsTestingEveryObject*')
+# The light buffer (core/light_buffer.h) and the feelers that skip the surface they leave.
+mutant light-buffer-face-sign core/light_buffer.cpp \
+    'w = ax, u = y, v = z, face = x < 0.0f ? 1 : 0;' 'w = ax, u = y, v = z, face = x < 0.0f ? 0 : 1;' \
+    rt_tests $(unit 'LightBuffer.*:ShadowFeelers.*')
+mutant light-buffer-box-across-the-lights-plane-unclipped core/light_buffer.cpp \
+    'std::max(s > 0.0 ? lo[m] : -hi[m], 1e-300)' '(s > 0.0 ? lo[m] : -hi[m])' \
+    rt_tests $(unit 'LightBuffer.*')
+mutant light-buffer-no-margin core/light_buffer.cpp \
+    'constexpr double kMargin = 1e-5;' 'constexpr double kMargin = 0.0;' \
+    rt_tests $(unit 'LightBuffer.*')
+mutant crowded-cell-blocks-nothing core/scene.cpp \
+    'return bounded_[slot] != leaving && occluded_by(bounded_[slot], feeler, t_limit);' \
+    'return false && occluded_by(bounded_[slot], feeler, t_limit);' \
+    rt_tests $(unit 'ShadowFeelers.*')
+mutant feeler-skips-a-sphere-seen-from-inside core/scene.cpp \
+    '(convex == Convex::kOutside && front_face)' '(convex == Convex::kOutside)' \
+    rt_tests $(unit 'ShadowFeelers.*')
 mutant packet-mesh-sees-world-rays core/scene.cpp \
     'intersect_packet(local.data(), hits, lanes)' 'intersect_packet(rays, hits, lanes)' \
     rt_tests $(unit 'ScenePackets.*')
@@ -264,7 +282,8 @@ mutant oracle-refraction-indices-swapped core/tracer.cpp \
 mutant oracle-glass-nesting-ignored core/medium.h \
     'Crossing c{ior(), 1.0f, *this};' 'Crossing c{1.0f, 1.0f, *this};' rtrender "${oracle[@]}"
 mutant oracle-shadow-feeler-dropped core/tracer.cpp \
-    'const bool blocked = scene_.occluded(Ray{p, dir}, t_max);' 'const bool blocked = false;' \
+    'const bool blocked = scene_.occluded(Ray{p, dir}, t_max, index, sp.cannot_meet_again);' \
+    'const bool blocked = false;' \
     rtrender "${oracle[@]}"
 mutant oracle-camera-fov-2-percent-wide core/camera.cpp \
     'std::tan(glm::radians(vfov_degrees) * 0.5f)' 'std::tan(glm::radians(vfov_degrees) * 0.51f)' \

@@ -1,0 +1,58 @@
+#pragma once
+// The light buffer of Haines and Greenberg ("The Light Buffer: A Shadow-Testing
+// Accelerator", IEEE CG&A, 1986), the item buffer's companion from the same group: a
+// cube of directions around a point light, each face a grid of cells, each cell listing
+// the objects that lie, at least in part, in its directions as seen from the light. A
+// shadow feeler runs along one direction from the light, so only the objects of that
+// direction's cell can block it: in an open scene most feelers find a cell with no
+// object at all and are answered without a traversal.
+//
+// The lists are conservative: an object's box is projected onto each face in double
+// precision and widened by a margin far above float's rounding, so every object a
+// feeler's own test could hit is in its cell, and a feeler tested against its cell's
+// objects gets the answer the traversal gives it.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/aabb.h"
+#include "core/ray.h"
+
+namespace rt {
+
+class LightBuffer {
+  public:
+    static constexpr int kCells = 64;             // per side of a face
+    static constexpr std::uint32_t kMaxList = 8;  // a cell with more: traverse the tree
+
+    // The objects' boxes (index: the caller's slot) as seen from a point light at `light`.
+    LightBuffer(const vec3& light, std::span<const Aabb> boxes);
+
+    // The slots a feeler from `origin` to the light may be blocked by, in ascending order.
+    struct Cell {
+        const std::uint32_t* begin = nullptr;
+        const std::uint32_t* end = nullptr;
+        bool crowded = true;  // or no direction (origin on the light): traverse instead
+    };
+    Cell cell(const vec3& origin) const;
+
+    // For the docs and tests: how many cells hold no object, and how many are crowded.
+    std::size_t empty_cells() const;
+    std::size_t crowded_cells() const;
+
+  private:
+    static constexpr int kFaceCells = kCells * kCells;
+    static constexpr std::uint32_t kCrowded = ~0u;
+    struct Range {
+        std::uint32_t begin = 0, end = 0;  // into slots_; begin kCrowded: crowded
+    };
+
+    vec3 light_;
+    // Per cell (face f = 2 axis + (negative ? 1 : 0), row v, column u at
+    // f * kFaceCells + v * kCells + u; u along axis + 1, v along axis + 2), its list.
+    std::vector<Range> cells_;
+    std::vector<std::uint32_t> slots_;
+};
+
+}  // namespace rt
