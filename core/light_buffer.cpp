@@ -1,6 +1,7 @@
 #include "core/light_buffer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/vec3.hpp>
@@ -51,27 +52,55 @@ FaceSpan project(const dvec3& lo, const dvec3& hi, int m, double s) {
     return {true, range((m + 1) % 3), range((m + 2) % 3)};
 }
 
+// The cells a box covers, face by face (face f: axis f / 2, negative if f is odd).
+std::array<FaceSpan, 6> spans_of(const vec3& light, const Aabb& box) {
+    std::array<FaceSpan, 6> spans{};
+    if (box.empty()) return spans;
+    const dvec3 l(light);
+    dvec3 lo = dvec3(box.lo) - l, hi = dvec3(box.hi) - l;
+    if (!std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z)) {
+        spans.fill(FaceSpan{true, {0, LightBuffer::kCells - 1}, {0, LightBuffer::kCells - 1}});
+        return spans;
+    }
+    // Of the box's reach from the light, or of the coordinates themselves where they are
+    // larger: float's step there is what a test's rounding is measured in.
+    const auto largest = [](const dvec3& a, const dvec3& b) {
+        return std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z), std::fabs(b.x),
+                         std::fabs(b.y), std::fabs(b.z)});
+    };
+    const dvec3 pad(kMargin * std::max(largest(lo, hi), largest(dvec3(box.lo), dvec3(box.hi))));
+    lo -= pad;
+    hi += pad;
+    for (int face = 0; face < 6; ++face)
+        spans[face] = project(lo, hi, face / 2, face % 2 ? -1.0 : 1.0);
+    return spans;
+}
+
+std::size_t cells_covered(const std::array<FaceSpan, 6>& spans) {
+    std::size_t n = 0;
+    for (const FaceSpan& f : spans)
+        if (f.covered)
+            n += static_cast<std::size_t>(f.u.second - f.u.first + 1) *
+                 static_cast<std::size_t>(f.v.second - f.v.first + 1);
+    return n;
+}
+
 }  // namespace
+
+std::optional<LightBuffer> LightBuffer::make(const vec3& light, std::span<const Aabb> boxes) {
+    std::size_t visits = 0;
+    for (const Aabb& box : boxes) visits += cells_covered(spans_of(light, box));
+    if (visits > kMaxVisits) return std::nullopt;
+    return LightBuffer(light, boxes);
+}
 
 LightBuffer::LightBuffer(const vec3& light, std::span<const Aabb> boxes) : light_(light) {
     const int cells = 6 * kFaceCells;
     // Each box's cells, visited twice: to count each cell's objects, then to list them.
     const auto for_each_cell = [&](const Aabb& box, auto&& visit) {
-        const dvec3 l(light);
-        dvec3 lo = dvec3(box.lo) - l, hi = dvec3(box.hi) - l;
-        const bool finite = std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z);
-        // Of the box's reach from the light, or of the coordinates themselves where they
-        // are larger: float's step there is what a test's rounding is measured in.
-        const auto largest = [](const dvec3& a, const dvec3& b) {
-            return std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z), std::fabs(b.x),
-                             std::fabs(b.y), std::fabs(b.z)});
-        };
-        const dvec3 pad(kMargin * std::max(largest(lo, hi), largest(dvec3(box.lo), dvec3(box.hi))));
-        lo -= pad;
-        hi += pad;
+        const std::array<FaceSpan, 6> spans = spans_of(light, box);
         for (int face = 0; face < 6; ++face) {
-            const FaceSpan span = finite ? project(lo, hi, face / 2, face % 2 ? -1.0 : 1.0)
-                                         : FaceSpan{true, {0, kCells - 1}, {0, kCells - 1}};
+            const FaceSpan& span = spans[face];
             if (!span.covered) continue;
             for (int v = span.v.first; v <= span.v.second; ++v)
                 for (int u = span.u.first; u <= span.u.second; ++u)
@@ -80,8 +109,7 @@ LightBuffer::LightBuffer(const vec3& light, std::span<const Aabb> boxes) : light
     };
     std::vector<std::uint32_t> count(cells, 0);
     for (const Aabb& box : boxes)
-        if (!box.empty())
-            for_each_cell(box, [&](int c) { count[c] = std::min(count[c] + 1, kMaxList + 1); });
+        for_each_cell(box, [&](int c) { count[c] = std::min(count[c] + 1, kMaxList + 1); });
     cells_.resize(cells);
     std::uint32_t listed = 0;
     for (int c = 0; c < cells; ++c) {
@@ -94,10 +122,9 @@ LightBuffer::LightBuffer(const vec3& light, std::span<const Aabb> boxes) : light
     }
     slots_.resize(listed);
     for (std::uint32_t slot = 0; slot < boxes.size(); ++slot)
-        if (!boxes[slot].empty())
-            for_each_cell(boxes[slot], [&](int c) {
-                if (cells_[c].begin != kCrowded) slots_[cells_[c].end++] = slot;
-            });
+        for_each_cell(boxes[slot], [&](int c) {
+            if (cells_[c].begin != kCrowded) slots_[cells_[c].end++] = slot;
+        });
 }
 
 LightBuffer::Cell LightBuffer::cell(const vec3& origin) const {

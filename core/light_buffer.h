@@ -13,6 +13,7 @@
 // objects gets the answer the traversal gives it.
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -26,8 +27,14 @@ class LightBuffer {
     static constexpr int kCells = 64;             // per side of a face
     static constexpr std::uint32_t kMaxList = 8;  // a cell with more: traverse the tree
 
+    // Building visits each cell of each box: more visits than this (many large objects
+    // near the light) and the light has no buffer (a build should not cost a frame).
+    static constexpr std::size_t kMaxVisits = std::size_t{1} << 22;
+
     // The objects' boxes (index: the caller's slot) as seen from a point light at `light`.
     LightBuffer(const vec3& light, std::span<const Aabb> boxes);
+    // The same, or none where building it would take more than kMaxVisits visits.
+    static std::optional<LightBuffer> make(const vec3& light, std::span<const Aabb> boxes);
 
     // The slots a feeler from `origin` to the light may be blocked by, in ascending order.
     struct Cell {

@@ -59,11 +59,17 @@ Scene::Scene(SceneDescription d, AccelKind kind)
     std::vector<Aabb> slot_boxes;
     for (const std::uint32_t object : bounded_)
         slot_boxes.push_back(object_bounds(objects[object]));
+    // A buffer is 6 x 64 x 64 cells (200 kB): the first kBufferedLights point lights
+    // have one, the others' feelers traverse the tree.
+    constexpr std::size_t kBufferedLights = 64;
+    std::size_t buffered = 0;
     for (const Light& light : lights) {
-        if (light.type == Light::Type::kPoint)
-            light_buffers_.emplace_back(std::in_place, light.position, slot_boxes);
-        else
+        if (light.type == Light::Type::kPoint && buffered < kBufferedLights) {
+            light_buffers_.push_back(LightBuffer::make(light.position, slot_boxes));
+            ++buffered;
+        } else {
             light_buffers_.emplace_back();
+        }
     }
 }
 

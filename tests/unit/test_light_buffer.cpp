@@ -131,6 +131,15 @@ TEST(LightBuffer, CrowdedAndEmptyCells) {
     EXPECT_TRUE(buffer.cell(vec3(inf, 0, 0)).crowded);
 }
 
+TEST(LightBuffer, OneTooCostlyToBuildIsNotBuilt) {
+    // Boxes around the light cover every cell of every face: 6 x 64 x 64 visits each.
+    const auto around = [](int n) { return std::vector<Aabb>(n, Aabb{vec3(-1.0f), vec3(1.0f)}); };
+    const std::size_t per_box = 6 * LightBuffer::kCells * LightBuffer::kCells;
+    const int fits = static_cast<int>(LightBuffer::kMaxVisits / per_box);
+    EXPECT_TRUE(LightBuffer::make(vec3(0.0f), around(fits)).has_value());
+    EXPECT_FALSE(LightBuffer::make(vec3(0.0f), around(fits + 1)).has_value());
+}
+
 TEST(LightBuffer, ABoxBeyondFloatsReachIsInEveryCell) {
     const std::vector<Aabb> boxes{Aabb{vec3(1, 1, 1), vec3(kInfinity, 2, 2)}};
     const LightBuffer buffer(vec3(0.0f), boxes);
