@@ -12,6 +12,8 @@
 // feeler's own test could hit is in its cell, and a feeler tested against its cell's
 // objects gets the answer the traversal gives it.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -61,5 +63,31 @@ class LightBuffer {
     std::vector<Range> cells_;
     std::vector<std::uint32_t> slots_;
 };
+
+// Inline: a feeler asks once, and a call returns the cell through memory.
+inline LightBuffer::Cell LightBuffer::cell(const vec3& origin) const {
+    const float x = origin.x - light_.x, y = origin.y - light_.y, z = origin.z - light_.z;
+    const float ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
+    // The face of the largest component (a tie to the lower axis: a box that reaches the
+    // direction is listed on both faces), and the other two, in the face's (u, v) order.
+    float w, u, v;
+    int face;
+    if (ax >= ay && ax >= az) {
+        w = ax, u = y, v = z, face = x < 0.0f ? 1 : 0;
+    } else if (ay >= az) {
+        w = ay, u = z, v = x, face = y < 0.0f ? 3 : 2;
+    } else {
+        w = az, u = x, v = y, face = z < 0.0f ? 5 : 4;
+    }
+    if (!(w > 0.0f) || !(w < kInfinity)) return {};  // on the light, or not finite
+    const float scale = 0.5f * kCells / w;
+    const auto index = [&](float t) {
+        return std::clamp(static_cast<int>(t * scale + 0.5f * kCells), 0, kCells - 1);
+    };
+    const Range r =
+        cells_[static_cast<std::size_t>(face * kFaceCells + index(v) * kCells + index(u))];
+    if (r.begin == kCrowded) return {};
+    return {slots_.data() + r.begin, slots_.data() + r.end, false};
+}
 
 }  // namespace rt
