@@ -4,7 +4,8 @@
 //            [--item-buffer on|off] [--accel bvh|bvh2|grid|brute] [--size WxH] [--threads N]
 //            [--max-depth N] [--spp N] [--msaa N] [--raster-shadows none|map]
 //            [--raster-reflections none|envmap] [--no-shadows]
-//            [--no-reflections] [--no-refractions] [--stats FILE.json] [--quiet] [--up AXIS]
+//            [--no-reflections] [--no-refractions] [--no-light-buffer] [--stats FILE.json]
+//            [--quiet] [--up AXIS]
 
 #include <iostream>
 
@@ -20,7 +21,8 @@ namespace rt::renderer {
 
 bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     CLI::App app{"rtrender: renders a scene with rtview's Whitted ray tracer and/or OpenGL"};
-    bool no_shadows = false, no_reflections = false, no_refractions = false;
+    bool no_shadows = false, no_reflections = false, no_refractions = false,
+         no_light_buffer = false;
     std::string item_buffer = "off";
     app.add_option("scene", o.scene, "Scene or model file (.json, .obj, .gltf, .glb, .ply, .stl)")
         ->required();
@@ -90,6 +92,9 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     app.add_flag("--no-shadows", no_shadows, "Trace no shadow feelers");
     app.add_flag("--no-reflections", no_reflections, "Trace no reflected rays");
     app.add_flag("--no-refractions", no_refractions, "Trace no refracted rays");
+    app.add_flag("--no-light-buffer", no_light_buffer,
+                 "Shadow feelers walk the objects' tree instead of their light buffer cell "
+                 "(the same image, slower: what the light buffer saves)");
     app.add_option("--stats", o.stats, "Write render statistics as JSON");
     app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
     app.add_option("--ray-tree", o.ray_tree,
@@ -125,6 +130,7 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     o.trace.shadows = !no_shadows;
     o.trace.reflections = !no_reflections;
     o.trace.refractions = !no_refractions;
+    o.trace.light_buffer = !no_light_buffer;
     return true;
 }
 

@@ -169,6 +169,7 @@ rt::Image Job::trace() {
     stats_["secondary_seconds"] = stats.secondary_seconds;
     stats_["threads"] = stats.threads;
     stats_["spp"] = o_.spp;
+    stats_["light_buffer"] = o_.trace.light_buffer;
     stats_["rays"] = {{"primary", stats.rays.primary},
                       {"shadow", stats.rays.shadow},
                       {"reflected", stats.rays.reflected},

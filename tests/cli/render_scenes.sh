@@ -70,6 +70,23 @@ else
     fail "exr: $(cat "$out/exr.log")"
 fi
 
+# --no-light-buffer: every shadow feeler walks the objects' tree; the same image, byte for
+# byte, and the stats say which way the feelers went.
+cases=$((cases + 1))
+for lb in on off; do
+    flag=()
+    [ "$lb" = off ] && flag=(--no-light-buffer)
+    "$rtrender" "$assets/scenes/whitted.json" --size 96x72 -o "$out/lb_$lb.png" --quiet \
+        --stats "$out/lb_$lb.json" "${flag[@]}" >"$out/lb_$lb.log" 2>&1 ||
+        fail "--light-buffer $lb: $(cat "$out/lb_$lb.log")"
+done
+if cmp -s "$out/lb_on.png" "$out/lb_off.png" && grep -q '"light_buffer": true' "$out/lb_on.json" &&
+    grep -q '"light_buffer": false' "$out/lb_off.json"; then
+    echo "ok   --no-light-buffer: the same image"
+else
+    fail "--no-light-buffer: the images differ or the stats do not say"
+fi
+
 # Every acceleration structure renders the same image, byte for byte: they find the
 # same hits, and no ray leaving a surface hits that surface again (which once put
 # acne on the Cornell box's walls with the grid and brute force, never the BVH).

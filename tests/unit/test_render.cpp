@@ -128,6 +128,25 @@ TEST(Render, EveryAssetSceneGivesASanePicture) {
     EXPECT_GE(scenes, 4);
 }
 
+// The light buffer and the skipped convex surfaces change how a feeler is answered, not
+// the answer: every shipped scene, byte for byte, with them and without.
+TEST(Render, TheLightBufferChangesNoPixel) {
+    int scenes = 0;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(test::source_dir() / "assets/scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        ++scenes;
+        const Scene scene(test::shipped_scene(entry.path().filename().string(), 160, 90));
+        RenderOptions with, without;
+        without.trace.light_buffer = false;
+        RenderStats stats;
+        const Image a = render(scene, with, &stats), b = render(scene, without);
+        EXPECT_GT(stats.rays.shadow, 1000u) << entry.path();
+        EXPECT_TRUE(a.pixels == b.pixels) << entry.path();
+    }
+    EXPECT_GE(scenes, 4);
+}
+
 TEST(Render, DefaultSceneShowsShadowsReflectionAndRefraction) {
     const Scene scene(test::shipped_scene("whitted.json", 160, 120));
     RenderStats stats;
