@@ -5,7 +5,8 @@
 // the objects that lie, at least in part, in its directions as seen from the light. A
 // shadow feeler runs along one direction from the light, so only the objects of that
 // direction's cell can block it: in an open scene most feelers find a cell with no
-// object at all and are answered without a traversal.
+// object at all and are answered without a traversal. A directional light's feelers are
+// parallel, so its buffer is one grid across the light's direction instead.
 //
 // The lists are conservative: an object's box is projected onto each face in double
 // precision and widened by a margin far above float's rounding, so every object a
@@ -13,20 +14,27 @@
 // objects gets the answer the traversal gives it.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
 #include "core/aabb.h"
+#include "core/light.h"
 #include "core/ray.h"
 
 namespace rt {
 
 class LightBuffer {
   public:
-    static constexpr int kCells = 64;             // per side of a face
+    static constexpr int kCells = 64;             // per side of a cube face (point lights)
+    static constexpr int kGrid = 128;             // per side of the grid (directional lights)
     static constexpr std::uint32_t kMaxList = 8;  // a cell with more: traverse the tree
 
     // Building visits each cell of each box: more visits than this (many large objects
@@ -35,8 +43,11 @@ class LightBuffer {
 
     // The objects' boxes (index: the caller's slot) as seen from a point light at `light`.
     LightBuffer(const vec3& light, std::span<const Aabb> boxes);
-    // The same, or none where building it would take more than kMaxVisits visits.
-    static std::optional<LightBuffer> make(const vec3& light, std::span<const Aabb> boxes);
+    // A point light's buffer, or a directional light's: a grid across the light's
+    // direction over the boxes' shadows (a feeler runs along the direction, so only the
+    // objects over its origin's cell can block it). None where building it would take
+    // more than kMaxVisits visits, or a box is beyond float's reach (directional).
+    static std::optional<LightBuffer> make(const Light& light, std::span<const Aabb> boxes);
 
     // The slots a feeler from `origin` to the light may be blocked by, in ascending order.
     struct Cell {
@@ -50,22 +61,42 @@ class LightBuffer {
     std::size_t empty_cells() const;
     std::size_t crowded_cells() const;
 
+    // The cells a box covers on one face (of the cube, or the one grid): the build's.
+    struct FaceSpan {
+        bool covered = false;
+        std::pair<int, int> u, v;  // first and last column, first and last row
+    };
+
   private:
-    static constexpr int kFaceCells = kCells * kCells;
     static constexpr std::uint32_t kCrowded = ~0u;
     struct Range {
         std::uint32_t begin = 0, end = 0;  // into slots_; begin kCrowded: crowded
     };
 
-    vec3 light_;
+    LightBuffer() = default;
+    Cell grid_cell(const vec3& origin) const;
+    bool set_up_grid(const vec3& direction, std::span<const Aabb> boxes);
+    std::array<FaceSpan, 6> grid_spans(const Aabb& box) const;
+    template <class Spans>
+    void fill(std::span<const Aabb> boxes, Spans&& spans_of_box);
+
+    bool directional_ = false;
+    int side_ = kCells, faces_ = 6;
+    vec3 light_{0.0f};  // point lights
+    // Directional lights: the grid's axes across the light, its corner and cell sizes.
+    vec3 e1_{0.0f}, e2_{0.0f};
+    glm::dvec2 grid_lo_{0.0}, grid_step_{1.0};
+    glm::vec2 grid_lo_f_{0.0f}, grid_inv_f_{1.0f};
     // Per cell (face f = 2 axis + (negative ? 1 : 0), row v, column u at
-    // f * kFaceCells + v * kCells + u; u along axis + 1, v along axis + 2), its list.
+    // f side^2 + v side + u; u along axis + 1, v along axis + 2; the grid: face 0, u
+    // along e1, v along e2), its list.
     std::vector<Range> cells_;
     std::vector<std::uint32_t> slots_;
 };
 
 // Inline: a feeler asks once, and a call returns the cell through memory.
 inline LightBuffer::Cell LightBuffer::cell(const vec3& origin) const {
+    if (directional_) return grid_cell(origin);  // out of line: point lights are the many
     const float x = origin.x - light_.x, y = origin.y - light_.y, z = origin.z - light_.z;
     const float ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
     // The face of the largest component (a tie to the lower axis: a box that reaches the
@@ -85,7 +116,7 @@ inline LightBuffer::Cell LightBuffer::cell(const vec3& origin) const {
         return std::clamp(static_cast<int>(t * scale + 0.5f * kCells), 0, kCells - 1);
     };
     const Range r =
-        cells_[static_cast<std::size_t>(face * kFaceCells + index(v) * kCells + index(u))];
+        cells_[static_cast<std::size_t>(face * kCells * kCells + index(v) * kCells + index(u))];
     if (r.begin == kCrowded) return {};
     return {slots_.data() + r.begin, slots_.data() + r.end, false};
 }

@@ -25,7 +25,7 @@ Aabb Scene::object_bounds(const Object& o) const {
     return o.transform ? box.transformed(o.transform->m) : box;
 }
 
-Scene::Scene(SceneDescription d, AccelKind kind)
+Scene::Scene(SceneDescription d, AccelKind kind, bool light_buffers)
     : camera(d.camera),
       background(d.background),
       ambient(d.ambient),
@@ -59,13 +59,14 @@ Scene::Scene(SceneDescription d, AccelKind kind)
     std::vector<Aabb> slot_boxes;
     for (const std::uint32_t object : bounded_)
         slot_boxes.push_back(object_bounds(objects[object]));
-    // A buffer is 6 x 64 x 64 cells (200 kB): the first kBufferedLights point lights
-    // have one, the others' feelers traverse the tree.
+    // A buffer is 6 x 64 x 64 cells (200 kB) for a point light, 128 x 128 for a
+    // directional one: the first kBufferedLights lights have one, the others' feelers
+    // traverse the tree.
     constexpr std::size_t kBufferedLights = 64;
     std::size_t buffered = 0;
     for (const Light& light : lights) {
-        if (light.type == Light::Type::kPoint && buffered < kBufferedLights) {
-            light_buffers_.push_back(LightBuffer::make(light.position, slot_boxes));
+        if (light_buffers && buffered < kBufferedLights) {
+            light_buffers_.push_back(LightBuffer::make(light, slot_boxes));
             ++buffered;
         } else {
             light_buffers_.emplace_back();

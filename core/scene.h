@@ -55,8 +55,11 @@ struct SceneDescription {
 
 class Scene {
   public:
-    // Builds every mesh's structure and the one over the objects, with `kind`.
-    explicit Scene(SceneDescription description, AccelKind kind = AccelKind::kBvh);
+    // Builds every mesh's structure and the one over the objects, with `kind`, and with
+    // `light_buffers` each light's buffer (core/light_buffer.h; without, every feeler
+    // walks the objects' tree: the same answers, slower).
+    explicit Scene(SceneDescription description, AccelKind kind = AccelKind::kBvh,
+                   bool light_buffers = true);
     // Built once and shared (by reference or shared_ptr), never copied or moved: the
     // const data below says "read-only" in the type.
     Scene(const Scene&) = delete;
@@ -124,7 +127,7 @@ class Scene {
     Accel top_;                                              // over the bounded objects
     std::vector<std::uint32_t> bounded_;                     // traversal slot -> object
     std::vector<std::uint32_t> unbounded_;                   // planes: tested for every ray
-    std::vector<std::optional<LightBuffer>> light_buffers_;  // per light; point lights only
+    std::vector<std::optional<LightBuffer>> light_buffers_;  // per light, where it has one
 };
 
 template <class... F>

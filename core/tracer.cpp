@@ -147,9 +147,7 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool
     }
     ++counts.shadow;
     const auto index = static_cast<std::size_t>(&light - scene_.lights.data());
-    const bool blocked = options_.light_buffer
-                             ? scene_.occluded(Ray{p, dir}, t_max, index, sp.cannot_meet_again)
-                             : scene_.occluded(Ray{p, dir}, t_max);
+    const bool blocked = scene_.occluded(Ray{p, dir}, t_max, index, sp.cannot_meet_again);
     if (recorder_) record_feeler(Ray{p, dir}, t_max, light, blocked);
     return !blocked;
 }

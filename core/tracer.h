@@ -16,10 +16,6 @@ struct TraceOptions {
     bool refractions = true;
     int max_depth = 5;         // bounces after the primary ray
     float min_weight = 0.01f;  // a ray that adds less than this to the pixel is not cast
-    // Shadow feelers test the objects of their light buffer cell (core/light_buffer.h)
-    // and skip the convex surface they leave; off, each walks the objects' tree and tests
-    // every object there, as the tutorial's feeler does: the same image, slower.
-    bool light_buffer = true;
 
     bool operator==(const TraceOptions&) const = default;
 };

@@ -246,6 +246,9 @@ mutant root-any-hit-skips-lane-0 core/wide_bvh.h \
 mutant light-buffer-face-sign core/light_buffer.cpp \
     'w = ax, u = y, v = z, face = x < 0.0f ? 1 : 0;' 'w = ax, u = y, v = z, face = x < 0.0f ? 0 : 1;' \
     rt_tests $(unit 'LightBuffer.*:ShadowFeelers.*')
+mutant light-buffer-grid-shifted core/light_buffer.h \
+    '(glm::dot(origin, e1_) - grid_lo_f_.x)' '(glm::dot(origin, e1_) + grid_lo_f_.x)' \
+    rt_tests $(unit 'LightBuffer.*')
 mutant light-buffer-box-across-the-lights-plane-unclipped core/light_buffer.cpp \
     'std::max(s > 0.0 ? lo[m] : -hi[m], 1e-300)' '(s > 0.0 ? lo[m] : -hi[m])' \
     rt_tests $(unit 'LightBuffer.*')

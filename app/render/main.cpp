@@ -93,8 +93,8 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     app.add_flag("--no-reflections", no_reflections, "Trace no reflected rays");
     app.add_flag("--no-refractions", no_refractions, "Trace no refracted rays");
     app.add_flag("--no-light-buffer", no_light_buffer,
-                 "Shadow feelers walk the objects' tree instead of their light buffer cell "
-                 "(the same image, slower: what the light buffer saves)");
+                 "Build no light buffers: shadow feelers walk the objects' tree (the same "
+                 "image, slower: what the light buffers save)");
     app.add_option("--stats", o.stats, "Write render statistics as JSON");
     app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
     app.add_option("--ray-tree", o.ray_tree,
@@ -130,7 +130,7 @@ bool parse_command_line(int argc, char** argv, Options& o, int& exit_code) {
     o.trace.shadows = !no_shadows;
     o.trace.reflections = !no_reflections;
     o.trace.refractions = !no_refractions;
-    o.trace.light_buffer = !no_light_buffer;
+    o.light_buffer = !no_light_buffer;
     return true;
 }
 

@@ -24,6 +24,7 @@ struct Options {
     Mode mode = Mode::kTrace;
     rt::gl::Backend gl = rt::gl::Backend::kAuto;
     rt::AccelKind accel = rt::AccelKind::kBvh;
+    bool light_buffer = true;   // shadow feelers through each light's buffer (--no-light-buffer)
     std::string up = "y";       // a bare mesh's up axis (rt::LoadOptions)
     std::optional<int> camera;  // a glTF file's camera (rt::LoadOptions)
     bool item_buffer = false;

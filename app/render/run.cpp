@@ -169,7 +169,7 @@ rt::Image Job::trace() {
     stats_["secondary_seconds"] = stats.secondary_seconds;
     stats_["threads"] = stats.threads;
     stats_["spp"] = o_.spp;
-    stats_["light_buffer"] = o_.trace.light_buffer;
+    stats_["light_buffer"] = o_.light_buffer;
     stats_["rays"] = {{"primary", stats.rays.primary},
                       {"shadow", stats.rays.shadow},
                       {"reflected", stats.rays.reflected},
@@ -322,7 +322,7 @@ int Job::run() {
     stats_["origin"] = {loaded_.origin.x, loaded_.origin.y, loaded_.origin.z};
     {
         const PhaseLine phase(show_phases, "building the acceleration structures");
-        scene_.emplace(std::move(description), o_.accel);
+        scene_.emplace(std::move(description), o_.accel, o_.light_buffer);
     }
     const rt::Scene& scene = *scene_;
     stats_["build_seconds"] = watch.lap();

@@ -114,6 +114,46 @@ TEST(LightBuffer, FeelersThroughCornersOnCellBoundariesFindTheBox) {
     EXPECT_GT(met, 1000);
 }
 
+// A directional light's grid: a feeler runs from its origin against the light's
+// direction, without end; every box on that half-line must be in its cell.
+TEST(LightBuffer, DirectionalFeelersFindEveryBoxUpstream) {
+    std::mt19937 rng(13);
+    int met = 0, outside = 0;
+    const vec3 directions[] = {{0, -1, 0},
+                               {1, 0, 0},
+                               {0, 0, -1},
+                               {0.5f, -0.8f, 0.3f},
+                               {-0.5f, 0.2f, 0.84f}};  // axes, and |x| about the frame's switch
+    for (int scene = 0; scene < 30; ++scene) {
+        const vec3 d = scene < 5 ? directions[scene] : random_point(rng, 1.0f);
+        const Light light{Light::Type::kDirectional, {}, glm::normalize(d), vec3(1.0f)};
+        const vec3 centre = scene % 3 == 0 ? vec3(2000, -500, 800) : vec3(0.0f);
+        std::vector<Aabb> boxes = awkward_boxes(rng, centre);
+        const auto buffer = LightBuffer::make(light, boxes);
+        ASSERT_TRUE(buffer.has_value());
+        for (int i = 0; i < 3000; ++i) {
+            const vec3 o = centre + random_point(rng, i % 10 == 0 ? 200.0f : 12.0f);
+            const dvec3 far = dvec3(o) - 1e5 * dvec3(light.direction);  // beyond every box
+            const LightBuffer::Cell cell = buffer->cell(o);
+            ASSERT_FALSE(cell.crowded);
+            outside += cell.begin == cell.end;
+            for (std::uint32_t slot = 0; slot < boxes.size(); ++slot) {
+                if (!segment_meets(dvec3(o), far, boxes[slot])) continue;
+                ++met;
+                ASSERT_TRUE(listed(cell, slot))
+                    << "scene " << scene << ", origin " << i << ", box " << slot;
+            }
+        }
+    }
+    EXPECT_GT(met, 5000);
+    EXPECT_GT(outside, 1000);  // origins whose feelers no box shadows: empty cells
+    const std::vector<Aabb> unbounded{Aabb{vec3(0.0f), vec3(kInfinity, 1, 1)}};
+    EXPECT_FALSE(
+        LightBuffer::make(Light{Light::Type::kDirectional, {}, {0, -1, 0}, vec3(1.0f)}, unbounded)
+            .has_value())
+        << "a box beyond float's reach: no grid";
+}
+
 TEST(LightBuffer, CrowdedAndEmptyCells) {
     std::vector<Aabb> boxes;
     for (std::uint32_t i = 0; i <= LightBuffer::kMaxList; ++i)  // one more than a cell lists
@@ -136,8 +176,9 @@ TEST(LightBuffer, OneTooCostlyToBuildIsNotBuilt) {
     const auto around = [](int n) { return std::vector<Aabb>(n, Aabb{vec3(-1.0f), vec3(1.0f)}); };
     const std::size_t per_box = 6 * LightBuffer::kCells * LightBuffer::kCells;
     const int fits = static_cast<int>(LightBuffer::kMaxVisits / per_box);
-    EXPECT_TRUE(LightBuffer::make(vec3(0.0f), around(fits)).has_value());
-    EXPECT_FALSE(LightBuffer::make(vec3(0.0f), around(fits + 1)).has_value());
+    const Light light{Light::Type::kPoint, vec3(0.0f), {}, vec3(1.0f)};
+    EXPECT_TRUE(LightBuffer::make(light, around(fits)).has_value());
+    EXPECT_FALSE(LightBuffer::make(light, around(fits + 1)).has_value());
 }
 
 TEST(LightBuffer, ABoxBeyondFloatsReachIsInEveryCell) {

@@ -136,11 +136,11 @@ TEST(Render, TheLightBufferChangesNoPixel) {
          std::filesystem::directory_iterator(test::source_dir() / "assets/scenes")) {
         if (entry.path().extension() != ".json") continue;
         ++scenes;
-        const Scene scene(test::shipped_scene(entry.path().filename().string(), 160, 90));
-        RenderOptions with, without;
-        without.trace.light_buffer = false;
+        const std::string name = entry.path().filename().string();
+        const Scene with(test::shipped_scene(name, 160, 90)),
+            without(test::shipped_scene(name, 160, 90), AccelKind::kBvh, false);
         RenderStats stats;
-        const Image a = render(scene, with, &stats), b = render(scene, without);
+        const Image a = render(with, {}, &stats), b = render(without, {});
         EXPECT_GT(stats.rays.shadow, 1000u) << entry.path();
         EXPECT_TRUE(a.pixels == b.pixels) << entry.path();
     }
