@@ -243,10 +243,10 @@ mutant root-any-hit-skips-lane-0 core/wide_bvh.h \
     'mask = box_ray.test(root, t_max, t_enter) & ~1u; mask != 0' \
     rt_tests $(unit '*SmallScenesOccludeAsTestingEveryObject*')
 # The light buffer (core/light_buffer.h) and the feelers that skip the surface they leave.
-mutant light-buffer-face-sign core/light_buffer.cpp \
+mutant light-buffer-face-sign core/light_buffer.h \
     'w = ax, u = y, v = z, face = x < 0.0f ? 1 : 0;' 'w = ax, u = y, v = z, face = x < 0.0f ? 0 : 1;' \
     rt_tests $(unit 'LightBuffer.*:ShadowFeelers.*')
-mutant light-buffer-grid-shifted core/light_buffer.h \
+mutant light-buffer-grid-shifted core/light_buffer.cpp \
     '(glm::dot(origin, e1_) - grid_lo_f_.x)' '(glm::dot(origin, e1_) + grid_lo_f_.x)' \
     rt_tests $(unit 'LightBuffer.*')
 mutant light-buffer-box-across-the-lights-plane-unclipped core/light_buffer.cpp \

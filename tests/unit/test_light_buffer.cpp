@@ -203,9 +203,17 @@ SceneDescription shadow_casters(std::mt19937& rng, vec3 shift) {
                 glm::mat4(glm::mat3(vec3(1.5f, 0.2f, 0), vec3(0, 0.5f, 0.1f), vec3(0.3f, 0, 1))));
         desc.objects.push_back(o);
     }
-    for (int i = 0; i < 12; ++i)  // a row of small spheres: crowded cells for both lights
+    // Columns of small spheres along a feeler's way to each light: more than a cell lists
+    // (crowded cells, where feelers traverse the tree).
+    const vec3 towards_sun = -glm::normalize(vec3(-1, -2, -1));
+    for (int i = 1; i <= 10; ++i) {
+        const auto k = static_cast<float>(i);
+        desc.objects.push_back(Object{"column", Sphere{vec3(4, 12 - 1.6f * k, 5), 0.3f}, 0, {}});
         desc.objects.push_back(
-            Object{"row", Sphere{vec3(-6.0f + static_cast<float>(i), 0.0f, -7.0f), 0.45f}, 0, {}});
+            Object{"column", Sphere{vec3(-3, -4, 2) + 1.5f * k * towards_sun, 0.3f}, 0, {}});
+        desc.objects.push_back(Object{
+            "column", Sphere{vec3(0.5f) + (0.8f + 0.7f * k) * vec3(0.6f, -0.8f, 0), 0.2f}, 0, {}});
+    }
     desc.objects.push_back(Object{"tri", Triangle{{-3, -2, 1}, {3, -2, 2}, {0, 3, 0}}, 0, {}});
     desc.meshes.push_back(test::box_mesh(vec3(-1), vec3(1), test::Winding::kOutward));
     Object box{"box", MeshRef{0, true}, 0, {}};
