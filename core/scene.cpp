@@ -222,9 +222,10 @@ bool Scene::occluded(const Ray& feeler, float t_max, std::size_t light,
     for (std::uint32_t i : unbounded_)
         if (i != leaving && occluded_by(i, feeler, t_max)) return true;
     const std::optional<LightBuffer>& buffer = light_buffers_[light];
-    const LightBuffer::Cell cell =
-        buffer && finite_ray(feeler) ? buffer->cell(feeler.origin) : LightBuffer::Cell{};
-    if (cell.crowded) {
+    const LightBuffer::Cell cell = buffer ? buffer->cell(feeler.origin) : LightBuffer::Cell{};
+    // A ray that is not finite meets no bounded object in the tree (it checks), nor so in
+    // an empty cell (most cells: no check needed); in a listed one it goes to the tree.
+    if (cell.crowded || (cell.begin != cell.end && !finite_ray(feeler))) {
         return top_.traverse<true>(feeler, t_max, [&](std::uint32_t slot, float& t_limit) {
             return bounded_[slot] != leaving && occluded_by(bounded_[slot], feeler, t_limit);
         });

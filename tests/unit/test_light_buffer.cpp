@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -281,6 +282,14 @@ TEST(ShadowFeelers, AnswerAsTestingEveryObject) {
             }
         }
     }
+    // Rays that are not finite: what the tree answers (nothing bounded meets them).
+    const Scene scene(shadow_casters(rng, vec3(0.0f)));
+    const float inf = kInfinity, nan = std::numeric_limits<float>::quiet_NaN();
+    for (const Ray& r : {Ray{{nan, 0, 0}, {0, 1, 0}}, Ray{{0, -6, 0}, {inf, 1, 0}},
+                         Ray{{0, -6, 0}, {0, nan, 0}}, Ray{{inf, 0, 0}, {-1, 0, 0}},
+                         Ray{{-inf, 2, 1}, {1, 0, 0}}, Ray{{3e38f, 0, 0}, {-3e38f, 1, 0}}})
+        for (std::size_t l = 0; l < scene.lights.size(); ++l)
+            EXPECT_EQ(scene.occluded(r, 1.0f, l), scene.occluded(r, 1.0f)) << "light " << l;
     EXPECT_GT(feelers, 10000);
     EXPECT_GT(blocked, feelers / 10);
     EXPECT_LT(blocked, feelers - feelers / 10);
