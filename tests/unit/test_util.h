@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/scene.h"
 #include "core/scene_loader.h"
@@ -15,6 +16,14 @@ namespace rt::test {
 inline std::filesystem::path source_dir() { return RTVIEW_SOURCE_DIR; }
 inline std::filesystem::path scene_path(const std::string& name) {
     return source_dir() / "assets/scenes" / name;
+}
+
+// The file names of the shipped scenes (assets/scenes/*.json).
+inline std::vector<std::string> shipped_scene_names() {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(source_dir() / "assets/scenes"))
+        if (entry.path().extension() == ".json") names.push_back(entry.path().filename().string());
+    return names;
 }
 
 // A shipped scene (assets/scenes/NAME) at another resolution, as a description to build.
