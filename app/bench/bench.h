@@ -86,6 +86,9 @@ class Structure {
 std::unique_ptr<Structure> make_ours(rt::AccelKind kind, int threads, bool packets = false);
 std::unique_ptr<Structure> make_embree(int threads,
                                        bool packets = false);  // nullptr without Embree
+// Embree with RTC_SCENE_FLAG_ROBUST ("embree-robust"): watertight and conservative, as
+// ours are; a comparison point beside the default's, never the reference.
+std::unique_ptr<Structure> make_embree_robust(int threads);  // nullptr without Embree
 bool have_embree();
 // The GPU tracer's traversal (app/gl/gpu_tracer.h) on a headless context of `backend`:
 // throws rt::Error where there is no context or no compute shaders.

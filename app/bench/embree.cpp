@@ -19,7 +19,9 @@ namespace {
 
 class Embree : public Structure {
   public:
-    explicit Embree(int threads) {
+    // `robust`: RTC_SCENE_FLAG_ROBUST, Embree's watertight triangle test (Pluecker) and
+    // conservative box test: the guarantees our own structures always give.
+    explicit Embree(int threads, bool robust = false) : robust_(robust) {
         std::string config = "threads=" + std::to_string(threads);
         if (const char* extra = std::getenv("RTBENCH_EMBREE_CONFIG"))
             config += std::string(",") + extra;
@@ -38,11 +40,12 @@ class Embree : public Structure {
         if (scene_) rtcReleaseScene(scene_);
         rtcReleaseDevice(device_);
     }
-    std::string name() const override { return "embree"; }
+    std::string name() const override { return robust_ ? "embree-robust" : "embree"; }
 
     void prepare(const rt::TriangleMesh& mesh) override {
         if (scene_) rtcReleaseScene(scene_);
         scene_ = rtcNewScene(device_);
+        if (robust_) rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
         RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
         auto* vertices = static_cast<float*>(
             rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -99,6 +102,7 @@ class Embree : public Structure {
     RTCScene scene_ = nullptr;
     std::atomic<long long> bytes_{0};
     long long bytes_before_build_ = 0;
+    bool robust_ = false;
 };
 
 // The same scene, the rays handed over kPacketWidth at a time: rtcIntersect8 /
@@ -174,6 +178,9 @@ std::unique_ptr<Structure> make_embree(int threads, bool packets) {
     if (packets) return std::make_unique<EmbreePackets>(threads);
     return std::make_unique<Embree>(threads);
 }
+std::unique_ptr<Structure> make_embree_robust(int threads) {
+    return std::make_unique<Embree>(threads, true);
+}
 bool have_embree() { return true; }
 
 }  // namespace rt::bench
@@ -182,6 +189,7 @@ bool have_embree() { return true; }
 
 namespace rt::bench {
 std::unique_ptr<Structure> make_embree(int, bool) { return nullptr; }
+std::unique_ptr<Structure> make_embree_robust(int) { return nullptr; }
 bool have_embree() { return false; }
 }  // namespace rt::bench
 

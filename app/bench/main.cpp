@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     app.add_option("--repeats", repeats, "Timed passes (the median is reported)")
         ->check(CLI::Range(1, 100));
     app.add_option("--only", only,
-                   "Structures to run: brute, grid, bvh2, bvh, embree, bvh-packets, "
+                   "Structures to run: brute, grid, bvh2, bvh, embree, embree-robust, bvh-packets, "
                    "embree-packets (default: all); bvh and a reference (embree, or brute "
                    "without it) always run")
         ->delimiter(',');

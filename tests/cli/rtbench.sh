@@ -14,6 +14,11 @@ check "  ... and say so" grep -q "every structure agrees" "$out/teapot.log"
 for key in brute grid bvh2 bvh bvh-packets build_seconds memory_bytes primary shadow secondary mrays_per_s checks; do
     check "  ... JSON has \"$key\"" grep -q "\"$key\"" "$out/teapot.json"
 done
+if grep -q '"embree"' "$out/teapot.json"; then
+    check "  ... and Embree in robust mode beside it, our BVH's time against it" \
+        grep -q '"embree_robust_time_ratio"' "$out/teapot.json"
+    check "  ... said in the log" grep -q "bvh against embree-robust" "$out/teapot.log"
+fi
 RTBENCH_FAULT=grid "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only grid,brute >"$out/fault.log" 2>&1
 check "a structure giving wrong answers makes rtbench fail (exit 1)" test $? -eq 1
 check "  ... naming it" grep -q "WRONG: grid" "$out/fault.log"
