@@ -32,11 +32,14 @@ struct Box4 {
 };
 
 // A primitive's box, moved around in place as the build partitions: no indirection.
-// The spare lane of lo carries the primitive's index, of hi nothing.
+// The spare lane of lo carries the primitive's index, of hi the bin the last binning
+// put it in (so that the partition after it need not work that out again).
 struct PrimRef {
     Float4 lo, hi;
 
     std::uint32_t index() const { return std::bit_cast<std::uint32_t>(lo[3]); }
+    int bin() const { return std::bit_cast<int>(hi[3]); }
+    void set_bin(int b) { hi[3] = std::bit_cast<float>(b); }
     Float4 centre2() const { return lo + hi; }  // twice the centre: the halving is left out
 };
 
@@ -58,9 +61,20 @@ struct Binner {
     int axis;
     float lo, scale;
 
-    int operator()(const PrimRef& p) const {
-        const int b = static_cast<int>((p.centre2()[axis] - lo) * scale);
+    template <int kAxis>
+    int bin(const PrimRef& p) const {
+        const int b = static_cast<int>((p.lo[kAxis] + p.hi[kAxis] - lo) * scale);
         return std::clamp(b, 0, kBins - 1);
+    }
+    // f(bin), `bin` binning along the axis named at compile time: a lane read directly,
+    // not by way of memory as a run-time lane index is.
+    template <class F>
+    decltype(auto) along(F&& f) const {
+        switch (axis) {
+            case 0: return f([this](const PrimRef& p) { return bin<0>(p); });
+            case 1: return f([this](const PrimRef& p) { return bin<1>(p); });
+            default: return f([this](const PrimRef& p) { return bin<2>(p); });
+        }
     }
 };
 
@@ -69,7 +83,8 @@ struct Bins {
     std::array<Bounds, kBins> bounds{};
     std::array<std::uint32_t, kBins> count{};
 
-    void add(const PrimRef& p, int b) {
+    void add(PrimRef& p, int b) {
+        p.set_bin(b);
         bounds[b].box.grow(p.lo, p.hi);
         const Float4 c = p.centre2();
         bounds[b].centres.grow(c, c);
@@ -84,8 +99,10 @@ struct Bins {
     }
 };
 
-// Builds the subtree of refs[begin, end) into its own node array; the refs array is
-// shared, and subtrees work on disjoint ranges of it, so they can run in parallel. A
+// Builds the subtree of [begin, end) into its own node array. The refs live in two
+// arrays of the same size: a partition moves a node's refs from the one they are in to
+// the other (no copy back), and a leaf's end up in `refs`. Both arrays are shared, and
+// subtrees work on disjoint ranges of them, so they can run in parallel. A
 // build with a pool of threads bins and partitions its large nodes in parts, one a
 // thread, and hands right subtrees to the pool while it builds the left. The tree is the
 // same on any number of threads (see Bvh::build).
@@ -94,8 +111,8 @@ struct Builder {
     static constexpr std::uint32_t kMinSubtree = 1024;  // a subtree worth a thread of its own
     static constexpr std::uint32_t kSorted = 16;        // nodes this small are split exactly
 
-    std::vector<PrimRef>& refs;
-    std::vector<PrimRef>& scratch;  // as large as refs: where a partition moves things
+    PrimRef* refs;     // where each leaf's refs end up
+    PrimRef* scratch;  // as large as refs: the other side of every other partition
     std::uint32_t max_leaf;
     std::vector<BvhNode> nodes;
     TaskPool* pool = nullptr;  // none: all on this thread
@@ -107,25 +124,27 @@ struct Builder {
     // Binned SAH (Wald, "On fast construction of SAH-based BVHs", 2007) along the axis
     // where the centres spread most: one pass bins them, a sweep finds the cheapest split
     // and, from the bins, both sides' bounds, so no child needs a pass of its own.
-    Split find_split(std::uint32_t begin, std::uint32_t end, const Bounds& bounds, Binner& binner) {
+    Split find_split(std::uint32_t begin, std::uint32_t end, const Bounds& bounds, PrimRef* r) {
         const Float4 extent = bounds.centres.hi - bounds.centres.lo;
         const int axis = extent[0] >= extent[1] ? (extent[0] >= extent[2] ? 0 : 2)
                                                 : (extent[1] >= extent[2] ? 1 : 2);
         const float scale = static_cast<float>(kBins) / extent[axis];
         if (!(extent[axis] > 0.0f) || !std::isfinite(scale)) return {};
-        binner = {axis, bounds.centres.lo[axis], scale};
-        if (end - begin <= kSorted) return sorted_split(begin, end, axis);
+        const Binner binner{axis, bounds.centres.lo[axis], scale};
+        if (end - begin <= kSorted) return sorted_split(begin, end, axis, r);
         Bins bins;
         const int n_parts = parts(begin, end);
-        if (n_parts == 1) {
-            for (std::uint32_t i = begin; i < end; ++i) bins.add(refs[i], binner(refs[i]));
-        } else {
+        binner.along([&](auto bin) {
+            if (n_parts == 1) {
+                for (std::uint32_t i = begin; i < end; ++i) bins.add(r[i], bin(r[i]));
+                return;
+            }
             std::vector<Bins> part_bins(static_cast<std::size_t>(n_parts));
             parallel_parts(pool, begin, end, n_parts, [&](int part, std::size_t b, std::size_t e) {
-                for (std::size_t i = b; i < e; ++i) part_bins[part].add(refs[i], binner(refs[i]));
+                for (std::size_t i = b; i < e; ++i) part_bins[part].add(r[i], bin(r[i]));
             });
             for (const Bins& p : part_bins) bins.add(p);
-        }
+        });
         return best_split(bins, axis, end - begin);
     }
 
@@ -137,15 +156,15 @@ struct Builder {
 
     // A small node: every split between its centres sorted along the axis, not 16 bins'
     // worth (most nodes are small, and their bins cost more than their primitives).
-    Split sorted_split(std::uint32_t begin, std::uint32_t end, int axis) {
-        const auto first = refs.begin() + begin, last = refs.begin() + end;
+    static Split sorted_split(std::uint32_t begin, std::uint32_t end, int axis, PrimRef* r) {
+        PrimRef *const first = r + begin, *const last = r + end;
         for (auto i = first + 1; i < last; ++i)  // insertion sort: stable, and n is small
             for (auto j = i; j > first && after(*(j - 1), *j, axis); --j) std::iter_swap(j - 1, j);
         const std::uint32_t n = end - begin;
         std::array<Bounds, kSorted> right{};  // right[k]: of [k, n)
         Bounds acc;
         for (std::uint32_t k = n; k-- > 1;) {
-            const PrimRef& p = refs[begin + k];
+            const PrimRef& p = r[begin + k];
             acc.box.grow(p.lo, p.hi);
             acc.centres.grow(p.centre2(), p.centre2());
             right[k] = acc;
@@ -153,7 +172,7 @@ struct Builder {
         Split best;
         acc = Bounds{};
         for (std::uint32_t k = 1; k < n; ++k) {
-            const PrimRef& p = refs[begin + k - 1];
+            const PrimRef& p = r[begin + k - 1];
             acc.box.grow(p.lo, p.hi);
             acc.centres.grow(p.centre2(), p.centre2());
             const float cost = acc.box.half_area() * static_cast<float>(k) +
@@ -190,30 +209,39 @@ struct Builder {
         return best;
     }
 
-    // Moves the primitives of bins [0, split.bin] to the front of [begin, end), each side
-    // in its old order; returns where the right side starts.
-    std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const Binner& binner,
-                            const Split& split) {
+    // Moves the refs of bins [0, split.bin] to the front of [begin, end) of the other
+    // array, the rest behind them, and points `r` there; returns where the right side
+    // starts. A sorted small node is split where it lies.
+    std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const Split& split,
+                            PrimRef*& r) {
         if (split.sorted_left != 0) return begin + split.sorted_left;
-        const auto goes_left = [&](const PrimRef& p) { return binner(p) <= split.bin; };
-        // In parts from three threads on; on two, three passes in two halves cost more than one.
+        PrimRef* const to = r == refs ? scratch : refs;
+        const std::uint32_t mid =
+            partition(begin, end, r, to, [&](const PrimRef& p) { return p.bin() <= split.bin; });
+        r = to;
+        return mid;
+    }
+    template <class GoesLeft>
+    std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const PrimRef* from,
+                            PrimRef* to, const GoesLeft& goes_left) {
+        // In parts from three threads on; on two, two passes in two halves cost more than one.
         const int n_parts = parts(begin, end) > 2 ? parts(begin, end) : 1;
-        if (n_parts == 1) {  // lefts in place, rights by way of scratch: no branches to miss
-            std::uint32_t left = begin, right = begin;
-            for (std::uint32_t i = begin; i < end; ++i)
-                (goes_left(refs[i]) ? refs[left++] : scratch[right++]) = refs[i];
-            std::copy(scratch.begin() + begin, scratch.begin() + right, refs.begin() + left);
+        if (n_parts == 1) {  // lefts from the front, rights from the back: no branches to miss
+            std::uint32_t left = begin, right = end;
+            for (std::uint32_t i = begin; i < end; ++i) {
+                const bool l = goes_left(from[i]);
+                to[l ? left : right - 1] = from[i];
+                left += l;
+                right -= !l;
+            }
             return left;
         }
-        // Each part counts its left side; then each writes both sides into scratch at its
-        // own offsets; then all of it comes back.
+        // Each part counts its left side; then each writes both sides at its own offsets.
         const auto n = static_cast<std::size_t>(n_parts);
         std::vector<std::uint32_t> lefts(n), sizes(n);
         parallel_parts(pool, begin, end, n_parts, [&](int part, std::size_t b, std::size_t e) {
             sizes[part] = static_cast<std::uint32_t>(e - b);
-            lefts[part] = static_cast<std::uint32_t>(
-                std::count_if(refs.begin() + static_cast<std::ptrdiff_t>(b),
-                              refs.begin() + static_cast<std::ptrdiff_t>(e), goes_left));
+            lefts[part] = static_cast<std::uint32_t>(std::count_if(from + b, from + e, goes_left));
         });
         std::uint32_t mid = begin;
         for (std::uint32_t l : lefts) mid += l;
@@ -226,19 +254,13 @@ struct Builder {
         }
         parallel_parts(pool, begin, end, n_parts, [&](int part, std::size_t b, std::size_t e) {
             std::uint32_t left = left_at[part], right = right_at[part];
-            for (std::size_t i = b; i < e; ++i)
-                scratch[goes_left(refs[i]) ? left++ : right++] = refs[i];
-        });
-        parallel_parts(pool, begin, end, n_parts, [&](int, std::size_t b, std::size_t e) {
-            std::copy(scratch.begin() + static_cast<std::ptrdiff_t>(b),
-                      scratch.begin() + static_cast<std::ptrdiff_t>(e),
-                      refs.begin() + static_cast<std::ptrdiff_t>(b));
+            for (std::size_t i = b; i < e; ++i) to[goes_left(from[i]) ? left++ : right++] = from[i];
         });
         return mid;
     }
 
     void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, const Bounds& bounds,
-               int depth) {
+               int depth, PrimRef* r) {
         const Aabb box = bounds.box.aabb();
         nodes[node].lo = box.lo;
         nodes[node].hi = box.hi;
@@ -246,12 +268,16 @@ struct Builder {
         const auto leaf = [&] {
             nodes[node].first = begin;
             nodes[node].count = count;
+            // In a leaf, the order is by index (see Bvh::build): sorted here, in the
+            // subtree's thread, while the leaf's refs are in the cache.
+            if (r != refs) std::copy(r + begin, r + end, refs + begin);
+            std::sort(refs + begin, refs + end,
+                      [](const PrimRef& a, const PrimRef& b) { return a.index() < b.index(); });
         };
         if (count <= max_leaf || depth >= Bvh::kMaxDepth) return leaf();
-        Binner binner{};
-        const Split split = find_split(begin, end, bounds, binner);
+        const Split split = find_split(begin, end, bounds, r);
         if (split.axis < 0) return leaf();  // all centres in one point: nothing separates them
-        const std::uint32_t mid = partition(begin, end, binner, split);
+        const std::uint32_t mid = partition(begin, end, split, r);
 
         // The right subtree to the pool (into nodes of its own) while this thread builds the
         // left; a small one here after it.
@@ -259,16 +285,16 @@ struct Builder {
         std::vector<BvhNode> right_nodes;
         const bool fork = pool && end - mid >= kMinSubtree && mid - begin >= kMinSubtree;
         if (fork)
-            pool->run(group, [&, right = split.right] {
+            pool->run(group, [&, r, right = split.right] {
                 Builder sub{refs, scratch, max_leaf, {}, pool};
                 sub.nodes.reserve(2 * (end - mid) / max_leaf);
                 sub.nodes.emplace_back();
-                sub.build(0, mid, end, right, depth + 1);
+                sub.build(0, mid, end, right, depth + 1, r);
                 right_nodes = std::move(sub.nodes);
             });
         const auto left = static_cast<std::uint32_t>(nodes.size());
         nodes.emplace_back();
-        build(left, begin, mid, split.left, depth + 1);
+        build(left, begin, mid, split.left, depth + 1, r);
         const auto right = static_cast<std::uint32_t>(nodes.size());
         if (fork) {
             pool->wait(group);
@@ -277,7 +303,7 @@ struct Builder {
             nodes.insert(nodes.end(), right_nodes.begin(), right_nodes.end());
         } else {
             nodes.emplace_back();
-            build(right, mid, end, split.right, depth + 1);
+            build(right, mid, end, split.right, depth + 1, r);
         }
         nodes[node].first = right;
         nodes[node].count = 0;
@@ -314,18 +340,17 @@ void Bvh::build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf, int th
         bounds.box.grow(b.box);
         bounds.centres.grow(b.centres);
     }
-    Builder builder{refs, scratch, std::max(1u, max_leaf), {}, workers};
+    Builder builder{refs.data(), scratch.data(), std::max(1u, max_leaf), {}, workers};
     builder.nodes.reserve(2 * prim_boxes.size() / builder.max_leaf + 1);
     builder.nodes.emplace_back();
-    builder.build(0, 0, count, bounds, 0);
+    builder.build(0, 0, count, bounds, 0, refs.data());
     nodes_ = std::move(builder.nodes);
     prims_.resize(refs.size());
     for (std::size_t s = 0; s < refs.size(); ++s) prims_[s] = refs[s].index();
     // Which primitives share a node depends on the set alone (bins and the small nodes'
-    // sort do not see the order); in a leaf, the order is by index. So the tree, slots
-    // included, is the same however the partitions ordered things, on any thread count.
-    for (const BvhNode& n : nodes_)
-        if (n.is_leaf()) std::sort(prims_.begin() + n.first, prims_.begin() + n.first + n.count);
+    // sort do not see the order); in a leaf, the order is by index (sorted as each leaf
+    // was made). So the tree, slots included, is the same however the partitions ordered
+    // things, on any thread count.
 }
 
 }  // namespace rt

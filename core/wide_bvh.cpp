@@ -46,18 +46,20 @@ class Collapser {
     // Makes the wide node for binary node `index`; returns its position in `out`.
     std::uint32_t collapse(std::uint32_t index) {
         std::array<std::uint32_t, N> children{};
+        std::array<float, N> area{};  // each child's, computed once
         int n = 1;
         children[0] = index;
         while (n < N) {
             int widest = -1;
             for (int k = 0; k < n; ++k)
-                if (opens(children[k]) && (widest < 0 || box(children[k]).half_area() >
-                                                             box(children[widest]).half_area()))
-                    widest = k;
+                if (opens(children[k]) && (widest < 0 || area[k] > area[widest])) widest = k;
             if (widest < 0) break;
             const std::uint32_t parent = children[widest];
             children[widest] = parent + 1;  // the left child follows its parent
-            children[n++] = tree_[parent].first;
+            area[widest] = box(parent + 1).half_area();
+            children[n] = tree_[parent].first;
+            area[n] = box(children[n]).half_area();
+            ++n;
         }
 
         const auto at = static_cast<std::uint32_t>(out_.size());

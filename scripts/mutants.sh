@@ -148,6 +148,13 @@ mutant wide-bvh-skips-a-child core/wide_bvh.h \
     'for (mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
     'for (mask &= mask - 1, mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
     rt_tests $(unit '*WideBvh*:*Accel*')
+mutant bvh-leaf-left-in-scratch core/bvh.cpp \
+    'if (r != refs) std::copy(r + begin, r + end, refs + begin);' \
+    'if (false) std::copy(r + begin, r + end, refs + begin);' \
+    rt_tests $(unit '*Bvh*:*Accel*')
+mutant bvh-leaf-order-unsorted core/bvh.cpp \
+    'return a.index() < b.index(); });' 'return false; });' \
+    rt_tests $(unit 'Bvh.TheTreeIsTheSameOnAnyNumberOfThreads')
 mutant glsl-specular-dropped shaders/phong.frag \
     'colour += visible * (u_kd * c * n_dot_l + specular) * u_light_colour[i];' \
     'colour += visible * (u_kd * c * n_dot_l) * u_light_colour[i];' \
