@@ -16,22 +16,25 @@
 namespace rt {
 
 // A ray prepared for the watertight test: the axes permuted so that z is the largest
-// component of the direction, and the shear that maps the direction onto +z.
+// component of the direction, and the shear that maps the direction onto +z. Plain
+// arrays, not glm vectors: glm (with GLM_FORCE_XYZW_ONLY) reads a vector's component by
+// a run-time index through a switch, a branch per read in every triangle test.
 struct ShearedRay {
     int kx = 0, ky = 1, kz = 2;
     float sx = 0.0f, sy = 0.0f, sz = 1.0f;
-    vec3 origin{0.0f};
+    float origin[3]{};
 
     ShearedRay() = default;
-    explicit ShearedRay(const Ray& r) : origin(r.origin) {
-        const vec3 a{std::fabs(r.dir.x), std::fabs(r.dir.y), std::fabs(r.dir.z)};
-        kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+    explicit ShearedRay(const Ray& r) : origin{r.origin.x, r.origin.y, r.origin.z} {
+        const float d[3] = {r.dir.x, r.dir.y, r.dir.z};
+        const float ax = std::fabs(d[0]), ay = std::fabs(d[1]), az = std::fabs(d[2]);
+        kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
         kx = (kz + 1) % 3;
         ky = (kx + 1) % 3;
-        if (r.dir[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
-        sx = r.dir[kx] / r.dir[kz];
-        sy = r.dir[ky] / r.dir[kz];
-        sz = 1.0f / r.dir[kz];
+        if (d[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
+        sx = d[kx] / d[kz];
+        sy = d[ky] / d[kz];
+        sz = 1.0f / d[kz];
     }
 };
 

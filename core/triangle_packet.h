@@ -85,7 +85,7 @@ struct ShearedRays {
         r.sx = sx[lane];
         r.sy = sy[lane];
         r.sz = sz[lane];
-        r.origin = vec3(origin[0][lane], origin[1][lane], origin[2][lane]);
+        for (int a = 0; a < 3; ++a) r.origin[a] = origin[a][lane];
         return r;
     }
 };

@@ -111,10 +111,13 @@ struct BoxRay {
     int near[3], far[3];
 
     explicit BoxRay(const Ray& ray) {
+        // Plain arrays: glm reads a component by a run-time index through a switch.
+        const float dir[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
+        const float from[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
         for (int a = 0; a < 3; ++a) {
-            const float inv_a = 1.0f / ray.dir[a];
+            const float inv_a = 1.0f / dir[a];
             inv[a] = splat<Float>(inv_a);
-            origin[a] = splat<Float>(ray.origin[a]);
+            origin[a] = splat<Float>(from[a]);
             near[a] = inv_a < 0.0f ? a + 3 : a;
             far[a] = inv_a < 0.0f ? a : a + 3;
         }

@@ -288,7 +288,8 @@ TEST(TrianglePacket, EachRayGetsWhatItsOwnTestGives) {
                     ASSERT_EQ(lane_ray.sx, each[k].sx);
                     ASSERT_EQ(lane_ray.sy, each[k].sy);
                     ASSERT_EQ(lane_ray.sz, each[k].sz);
-                    ASSERT_EQ(lane_ray.origin, each[k].origin);
+                    for (int axis = 0; axis < 3; ++axis)
+                        ASSERT_EQ(lane_ray.origin[axis], each[k].origin[axis]);
                 }
                 std::array<float, kW> t_max, limits;
                 std::array<int, kW> lane;
