@@ -25,15 +25,20 @@ struct Entry {
     bool brute() const { return structure->name() == "brute"; }
 };
 
-double time_build(Structure& s, const rt::TriangleMesh& mesh, int repeats) {
-    std::vector<double> seconds;
-    for (int k = 0; k < repeats; ++k) {
-        s.prepare(mesh);
-        const rt::Stopwatch watch;
-        s.build();
-        seconds.push_back(watch.seconds());
-    }
-    return median(seconds);
+// Each structure's build time, the median of `repeats` builds; the builds take turns
+// (ours, Embree, ours, ...), as the traced passes do, so that none gets the machine's
+// cold start or a quiet spell alone. Brute force is built once.
+void time_builds(std::vector<Entry>& entries, const rt::TriangleMesh& mesh, int repeats) {
+    std::vector<std::vector<double>> seconds(entries.size());
+    for (int k = 0; k < repeats; ++k)
+        for (std::size_t i = 0; i < entries.size(); ++i) {
+            if (k > 0 && entries[i].brute()) continue;
+            entries[i].structure->prepare(mesh);
+            const rt::Stopwatch watch;
+            entries[i].structure->build();
+            seconds[i].push_back(watch.seconds());
+        }
+    for (std::size_t i = 0; i < entries.size(); ++i) entries[i].build_seconds = median(seconds[i]);
 }
 
 // Each structure against the reference: Embree on every ray if there is one, and brute
@@ -210,8 +215,7 @@ int run_threads_sweep(const SceneBenchOptions& o, const rt::LoadedScene& loaded,
         std::vector<Entry> entries;
         entries.emplace_back(make_ours(rt::AccelKind::kBvh, threads));
         if (auto embree = make_embree(threads)) entries.emplace_back(std::move(embree));
-        for (Entry& e : entries)
-            e.build_seconds = time_build(*e.structure, mesh, measure.build_repeats);
+        time_builds(entries, mesh, measure.build_repeats);
         if (sets.empty()) {
             sets = ray_sets(*entries[0].structure, camera, mesh, loaded.scene.lights, measure);
             for (const RaySet& set : sets)
@@ -290,8 +294,7 @@ int run_scene(const SceneBenchOptions& o) {
                std::find(o.only.begin(), o.only.end(), name) != o.only.end();
     };
     std::erase_if(entries, [&](const Entry& e) { return !wanted(e); });
-    for (Entry& e : entries)
-        e.build_seconds = time_build(*e.structure, mesh, e.brute() ? 1 : o.measure.build_repeats);
+    time_builds(entries, mesh, o.measure.build_repeats);
 
     const auto bvh = std::find_if(entries.begin(), entries.end(),
                                   [](const Entry& e) { return e.structure->name() == "bvh"; });

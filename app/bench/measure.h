@@ -11,7 +11,7 @@ namespace rt::bench {
 struct MeasureOptions {
     int threads = 2;
     int repeats = 5;
-    int build_repeats = 3;
+    int build_repeats = 5;
     double brute_budget = 4e8;  // triangle tests per pass: brute force traces a subset of rays
 };
 
