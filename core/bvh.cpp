@@ -224,8 +224,7 @@ struct Builder {
     template <class GoesLeft>
     std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const PrimRef* from,
                             PrimRef* to, const GoesLeft& goes_left) {
-        // In parts from three threads on; on two, two passes in two halves cost more than one.
-        const int n_parts = parts(begin, end) > 2 ? parts(begin, end) : 1;
+        const int n_parts = parts(begin, end);
         if (n_parts == 1) {  // lefts from the front, rights from the back: no branches to miss
             std::uint32_t left = begin, right = end;
             for (std::uint32_t i = begin; i < end; ++i) {
