@@ -5,6 +5,7 @@
 #include <cmath>
 #include <thread>
 
+#include "core/large_array.h"
 #include "core/parallel.h"
 #include "core/simd.h"
 
@@ -71,9 +72,12 @@ struct Binner {
     template <class F>
     decltype(auto) along(F&& f) const {
         switch (axis) {
-            case 0: return f([this](const PrimRef& p) { return bin<0>(p); });
-            case 1: return f([this](const PrimRef& p) { return bin<1>(p); });
-            default: return f([this](const PrimRef& p) { return bin<2>(p); });
+            case 0:
+                return f([this](const PrimRef& p) { return bin<0>(p); });
+            case 1:
+                return f([this](const PrimRef& p) { return bin<1>(p); });
+            default:
+                return f([this](const PrimRef& p) { return bin<2>(p); });
         }
     }
 };
@@ -317,7 +321,7 @@ void Bvh::build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf, int th
     if (prim_boxes.empty()) return;
     threads = build_threads(threads);
     const auto count = static_cast<std::uint32_t>(prim_boxes.size());
-    std::vector<PrimRef> refs(count), scratch(count);
+    LargeArray<PrimRef> refs(count), scratch(count);  // written by the passes below
     // A pool only where there is more than one thread and enough to share.
     TaskPool* workers =
         threads > 1 && count >= 2 * Builder::kMinSubtree ? &TaskPool::shared(threads) : nullptr;

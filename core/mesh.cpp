@@ -35,15 +35,18 @@ void TriangleMesh::build(AccelKind kind, int threads) {
         std::uint32_t first, count;
     };
     std::vector<Leaf> leaves;
-    leaf_pack_.assign(order.size(), 0);
+    leaf_pack_.clear();
+    leaf_pack_.resize(order.size());
     std::uint32_t pack_total = 0;
     accel_.for_each_leaf([&](std::uint32_t first, std::uint32_t count) {
         leaves.push_back({first, count});
         leaf_pack_[first] = pack_total;
         pack_total += (count + kTriangle4Lanes - 1) / kTriangle4Lanes;
     });
-    packs_.assign(pack_total, Triangle4{});  // zeroed: the spare lanes never hit
-    pack_prims_.assign(std::size_t{pack_total} * kTriangle4Lanes, ~0u);
+    packs_.clear();  // then every lane written below, the spare ones zero (never hit)
+    packs_.resize(pack_total);
+    pack_prims_.clear();
+    pack_prims_.resize(std::size_t{pack_total} * kTriangle4Lanes);
     const auto fill = [&](int, std::size_t begin, std::size_t end) {
         for (std::size_t l = begin; l < end; ++l) {
             const Leaf leaf = leaves[l];
@@ -56,6 +59,11 @@ void TriangleMesh::build(AccelKind kind, int threads) {
                                                         positions[idx[2]]);
                 pack_prims_[std::size_t{start} * kTriangle4Lanes + i] = prim;
                 prim_lane_[prim] = start * kTriangle4Lanes + i;
+            }
+            for (std::uint32_t i = leaf.count; i % kTriangle4Lanes != 0; ++i) {
+                packs_[start + i / kTriangle4Lanes].set_empty(
+                    static_cast<int>(i % kTriangle4Lanes));
+                pack_prims_[std::size_t{start} * kTriangle4Lanes + i] = ~0u;
             }
         }
     };

@@ -11,6 +11,7 @@
 
 #include "core/accel.h"
 #include "core/hit.h"
+#include "core/large_array.h"
 #include "core/shapes.h"
 #include "core/triangle4.h"
 
@@ -61,10 +62,10 @@ struct TriangleMesh {
     // starting a new one (leaf_pack_[first slot] is its first). The grid's and brute
     // force's leaves are single triangles: slot s is lane 0 of packs_[s]. The wide BVH
     // hands out the first pack itself (leaves_are_packs_), no lookup on the way.
-    std::vector<Triangle4> packs_;
-    std::vector<std::uint32_t> pack_prims_;  // the triangle in lane l of pack p: [4 p + l]
-    std::vector<std::uint32_t> prim_lane_;   // its inverse: triangle -> 4 p + l
-    std::vector<std::uint32_t> leaf_pack_;
+    LargeArray<Triangle4> packs_;           // written in full by build(), in parallel
+    LargeArray<std::uint32_t> pack_prims_;  // the triangle in lane l of pack p: [4 p + l]
+    std::vector<std::uint32_t> prim_lane_;  // its inverse: triangle -> 4 p + l
+    LargeArray<std::uint32_t> leaf_pack_;   // read at leaves' first slots only
     bool leaves_are_packs_ = false;
 
     std::uint32_t first_pack(std::uint32_t leaf) const {

@@ -41,8 +41,13 @@ struct ShearedRay {
 inline constexpr std::uint32_t kTriangle4Lanes = 4;
 
 struct Triangle4 {
-    Float4 v[3][3]{};  // v[vertex][axis] lanes; unused lanes stay zero (never hit)
+    Float4 v[3][3];  // v[vertex][axis] lanes; unused lanes zero (never hit): Triangle4{} or
+                     // set_empty(), as a default-initialised pack is not written
 
+    void set_empty(int lane) {
+        for (auto& vertex : v)
+            for (Float4& axis : vertex) axis[lane] = 0.0f;
+    }
     void set(int lane, const vec3& a, const vec3& b, const vec3& c) {
         for (int axis = 0; axis < 3; ++axis) {
             v[0][axis][lane] = a[axis];

@@ -282,7 +282,8 @@ int run_scene(const SceneBenchOptions& o) {
          {rt::AccelKind::kBrute, rt::AccelKind::kGrid, rt::AccelKind::kBvh2, rt::AccelKind::kBvh})
         entries.emplace_back(make_ours(k, o.measure.threads));
     if (auto embree = make_embree(o.measure.threads)) entries.emplace_back(std::move(embree));
-    if (auto robust = make_embree_robust(o.measure.threads)) entries.emplace_back(std::move(robust));
+    if (auto robust = make_embree_robust(o.measure.threads))
+        entries.emplace_back(std::move(robust));
     entries.emplace_back(make_ours(rt::AccelKind::kBvh, o.measure.threads, true));
     if (auto embree = make_embree(o.measure.threads, true)) entries.emplace_back(std::move(embree));
     if (o.gpu) entries.emplace_back(make_gpu(o.gl));

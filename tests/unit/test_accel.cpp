@@ -320,7 +320,7 @@ TEST(Bvh, ParallelBuildGivesAValidTree) {
 // This was acne on the Cornell box's walls with the grid and brute force.
 TEST(Triangle4, RaysLeavingALargeTriangleDoNotHitIt) {
     const vec3 a{0, 0, 0}, b{0, 548.8f, 0}, c{0, 548.8f, 559.2f};  // the Cornell box's left wall
-    Triangle4 pack;  // zeroed: the three unused lanes must never hit
+    Triangle4 pack{};  // zeroed: the three unused lanes must never hit
     pack.set(0, a, b, c);
     std::mt19937 rng(23);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);

@@ -243,7 +243,7 @@ TEST(TrianglePacket, EachRayGetsWhatItsOwnTestGives) {
     std::map<std::array<int, 3>, std::vector<Ray>> by_axes;        // rays sharing a permutation
     int compared = 0, hits = 0, self_hits = 0;
     for (int round = 0; round < 400; ++round) {
-        Triangle4 pack;
+        Triangle4 pack{};
         const bool wall = round % 2 == 0;
         for (int lane = 0; lane < 4; ++lane) {
             if (wall && lane == 1) {
