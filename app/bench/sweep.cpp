@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 #include <glm/geometric.hpp>
@@ -27,8 +28,22 @@ struct Row {
     double ns_per_ray;
 };
 
+// `text` as one word for the shell, and as a string in gnuplot's single quotes: paths
+// with spaces or quotes in them are the user's to choose.
+std::string shell_quoted(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+std::string gnuplot_quoted(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
+    return out + "'";
+}
+
 void write_plot(const SweepOptions& o, const std::vector<Row>& rows) {
-    // gnuplot wants one block per line: the rows grouped by structure.
+    // gnuplot wants one block per line: the rows grouped by structure. Its data and
+    // script go beside the plot and are removed after it.
     const std::string data = o.png + ".dat", script = o.png + ".gnuplot";
     std::vector<std::string> names;
     for (const Row& r : rows)
@@ -44,15 +59,20 @@ void write_plot(const SweepOptions& o, const std::vector<Row>& rows) {
     dat.close();
     std::ofstream gp(script);
     gp << "set terminal pngcairo size 900,600 font ',11'\n"
-       << "set output '" << o.png << "'\n"
+       << "set output " << gnuplot_quoted(o.png) << "\n"
        << "set title 'rtbench --sweep: primary rays on a tessellated sphere'\n"
        << "set logscale xy\nset xlabel 'triangles'\nset ylabel 'nanoseconds per ray (2 "
           "threads)'\nset grid\n"
        << "set key left top\n"
-       << "plot for [i=0:" << names.size() - 1 << "] '" << data
-       << "' index i using 1:2 with linespoints lw 2 title columnheader(1)\n";
+       << "plot for [i=0:" << names.size() - 1 << "] " << gnuplot_quoted(data)
+       << " index i using 1:2 with linespoints lw 2 title columnheader(1)\n";
     gp.close();
-    if (std::system(("gnuplot " + script + " 2>/dev/null").c_str()) == 0)
+    const bool plotted =
+        std::system(("gnuplot " + shell_quoted(script) + " 2>/dev/null").c_str()) == 0;
+    std::error_code ignored;
+    std::filesystem::remove(data, ignored);
+    std::filesystem::remove(script, ignored);
+    if (plotted)
         std::printf("plot: %s\n", o.png.c_str());
     else
         std::printf("no plot: gnuplot is missing or failed (the CSV is there)\n");

@@ -36,10 +36,13 @@ done
 RTBENCH_FAULT=gpu "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --only bvh --gpu >"$out/fault_gpu.log" 2>&1
 check "  ... and wrong GPU answers fail, naming it" grep -q "WRONG: gpu" "$out/fault_gpu.log"
 
-"$rtbench" --sweep --counts 200,2000 --repeats 1 --csv "$out/sweep.csv" --png "$out/sweep.png" >"$out/sweep.log" 2>&1
+# A plot path with a space and a quote in it: the user's to choose.
+plot="$out/it's a sweep.png"
+"$rtbench" --sweep --counts 200,2000 --repeats 1 --csv "$out/sweep.csv" --png "$plot" >"$out/sweep.log" 2>&1
 check "sweep runs" test $? -eq 0
 check "  ... and writes a row per count and structure" test "$(grep -c '^[0-9]' "$out/sweep.csv")" -ge 8
-check "  ... and a plot" test -s "$out/sweep.png"
+check "  ... and a plot, at a path with a space and a quote" test -s "$plot"
+check "  ... leaving no gnuplot data or script behind" test ! -e "$plot.dat" -a ! -e "$plot.gnuplot"
 if grep -q ',embree,' "$out/sweep.csv"; then
   check "  ... and each row's time relative to Embree's (Embree's own: 1)" \
     awk -F, 'NR > 1 && $2 == "embree" && $6 != 1 { bad = 1 } NR > 1 && NF != 6 { bad = 1 } END { exit bad }' "$out/sweep.csv"
