@@ -155,6 +155,10 @@ mutant bvh-leaf-left-in-scratch core/bvh.cpp \
 mutant bvh-leaf-order-unsorted core/bvh.cpp \
     'return a.index() < b.index(); });' 'return false; });' \
     rt_tests $(unit 'Bvh.TheTreeIsTheSameOnAnyNumberOfThreads')
+mutant spare-pack-lanes-left-as-they-were core/mesh.cpp \
+    'for (std::uint32_t i = leaf.count; i % kTriangle4Lanes != 0; ++i) {' \
+    'for (std::uint32_t i = leaf.count; false; ++i) {' \
+    rt_tests $(unit '*AccelTest.ARebuildLeavesNoEarlierTriangleBehind*')
 mutant glsl-specular-dropped shaders/phong.frag \
     'colour += visible * (u_kd * c * n_dot_l + specular) * u_light_colour[i];' \
     'colour += visible * (u_kd * c * n_dot_l) * u_light_colour[i];' \

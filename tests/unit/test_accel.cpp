@@ -73,6 +73,27 @@ TEST_P(AccelTest, MeshHitsMatchTheTutorialsTestOnEveryTriangle) {
     EXPECT_GT(hits, 500);  // the test means something only if many rays hit
 }
 
+// A mesh built again over fewer triangles reuses its arrays, which a build leaves
+// unwritten until it fills them (core/large_array.h): the spare lanes of its triangle
+// packs must be emptied, or the triangles of the earlier build would still be hit there.
+TEST_P(AccelTest, ARebuildLeavesNoEarlierTriangleBehind) {
+    TriangleMesh mesh;
+    const auto build = [&](int copies, vec3 corner) {  // a half of the unit square, stacked
+        mesh.positions = {{0, 0, 0}, corner, {1, 1, 0}};
+        mesh.triangles.assign(static_cast<std::size_t>(copies), glm::uvec3{0, 1, 2});
+        mesh.build(GetParam());
+    };
+    build(64, {1, 0, 0});  // the lower right half: every pack full of it
+    build(5, {0, 1, 0});   // the upper left half: one leaf of five, packs with spare lanes
+    Hit hit;
+    const Ray lower_right{{0.8f, 0.2f, 5.0f}, {0, 0, -1}},
+        upper_left{{0.2f, 0.8f, 5.0f}, {0, 0, -1}};
+    EXPECT_FALSE(mesh.intersect(lower_right, hit)) << "hit triangle " << hit.prim;
+    EXPECT_FALSE(mesh.occluded(lower_right, kInfinity));
+    EXPECT_TRUE(mesh.intersect(upper_left, hit));
+    EXPECT_LT(hit.prim, 5u);
+}
+
 TEST_P(AccelTest, SceneHitsMatchTestingEveryObject) {
     std::mt19937 rng(11);
     SceneDescription desc;
