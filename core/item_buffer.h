@@ -4,7 +4,10 @@
 // the GL pass fills it, core reads it; core never sees GL.
 
 #include <cstdint>
+#include <cstring>
 #include <vector>
+
+#include "core/simd.h"
 
 namespace rt {
 
@@ -15,6 +18,13 @@ struct ItemBuffer {
     int height = 0;
     std::vector<std::uint32_t> object;  // object index + 1, or kEmpty; bottom row first
     std::vector<std::uint32_t> prim;    // triangle index within the object (meshes)
+
+    using Ids = std::uint32_t __attribute__((vector_size(4 * kPacketWidth)));
+    static Ids load(const std::uint32_t* p) {
+        Ids v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    }
 
     ItemBuffer() = default;
     ItemBuffer(int w, int h)
@@ -48,6 +58,43 @@ struct ItemBuffer {
             }
         }
         return true;
+    }
+
+    // Which of the n (<= 32) values from values[at] on equal `value`, as bits.
+    static unsigned same_run(const std::vector<std::uint32_t>& values, std::size_t at, int n,
+                             std::uint32_t value) {
+        unsigned mask = 0;
+        int k = 0;
+        for (; k + kPacketWidth <= n; k += kPacketWidth) {
+            const Ids v = load(&values[at + static_cast<std::size_t>(k)]);
+            const Lanes<kPacketWidth>::Mask same = v == (Ids{} + value);
+            mask |= bits(same) << k;
+        }
+        for (; k < n; ++k)
+            mask |= static_cast<unsigned>(values[at + static_cast<std::size_t>(k)] == value) << k;
+        return mask;
+    }
+
+    // interior() for the pixels x .. x + n - 1 of row y (n <= 32), as bits (pixel x
+    // lowest). Away from the image's edges kPacketWidth pixels at a time: each of the nine
+    // neighbours' ids is one load of kPacketWidth, compared across the pixels at once.
+    unsigned interior_run(int x, int y, int n) const {
+        unsigned mask = 0;
+        int k = 0;
+        if (y > 0 && y + 1 < height && x > 0) {
+            for (; k + kPacketWidth <= n && x + k + kPacketWidth < width; k += kPacketWidth) {
+                const std::uint32_t* centre = &object[index(x + k, y)];
+                const Ids id = load(centre);
+                Ids differ{};
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx)
+                        differ |= load(centre + dy * static_cast<std::ptrdiff_t>(width) + dx) ^ id;
+                const Lanes<kPacketWidth>::Mask same = differ == Ids{};
+                mask |= bits(same) << k;
+            }
+        }
+        for (; k < n; ++k) mask |= static_cast<unsigned>(interior(x + k, y)) << k;
+        return mask;
     }
 };
 

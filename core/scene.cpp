@@ -1,9 +1,11 @@
 #include "core/scene.h"
 
 #include <array>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
+#include "core/shape_packets.h"
 #include "core/triangle4.h"
 
 namespace rt {
@@ -135,46 +137,62 @@ unsigned Scene::intersect_object_packet(std::uint32_t object, const Ray* rays, H
 
 namespace {
 
-// The plane's test (intersect(const Plane&, ...)) for the rays of `lanes` at once, the
-// rays as the lanes: the same arithmetic in the same order, so each ray gets the t its
-// own test gives. Returns the lanes whose hit replaced their record.
-unsigned plane_packet(const Plane& p, std::uint32_t object, const Ray* rays, Hit* hits,
-                      unsigned lanes) {
-    using Float = Lanes<kPacketWidth>::Float;
+// A shape's test across the rays of `lanes` (core/shape_packets.h); the hits replace
+// the rays' records. Returns their bits.
+template <class Shape>
+unsigned shape_packet(const Shape& shape, std::uint32_t object, const RayLanes<kPacketWidth>& r,
+                      Hit* hits, unsigned lanes) {
+    LaneHits<kPacketWidth> out;
     const int first = __builtin_ctz(lanes);
-    Float d_dot_n, o_dot_n, t_max;  // glm::dot's order: (x + y) + z
-    for (int a = 0; a < 3; ++a) {
-        Float o, d;
-        for (int lane = 0; lane < kPacketWidth; ++lane) {
-            const Ray& r = rays[(lanes >> lane) & 1u ? lane : first];
-            o[lane] = r.origin[a];
-            d[lane] = r.dir[a];
-        }
-        d_dot_n = a == 0 ? d * p.normal[a] : d_dot_n + d * p.normal[a];
-        o_dot_n = a == 0 ? o * p.normal[a] : o_dot_n + o * p.normal[a];
-    }
     for (int lane = 0; lane < kPacketWidth; ++lane)
-        t_max[lane] = hits[(lanes >> lane) & 1u ? lane : first].t;
-    const Float zero = splat<Float>(0.0f);
-    const Float t = (splat<Float>(p.offset) - o_dot_n) / d_dot_n;
-    const unsigned hit = bits((d_dot_n != zero) & (t > zero) & (t < t_max)) & lanes;
+        out.t_max[lane] = hits[(lanes >> lane) & 1u ? lane : first].t;
+    const unsigned hit = intersect_lanes(shape, r, lanes, out);
     for (unsigned rest = hit; rest != 0; rest &= rest - 1) {
         const unsigned lane = __builtin_ctz(rest);
-        hits[lane] = Hit{t[lane], object, 0, 0.0f, 0.0f};
+        hits[lane] = Hit{out.t[lane], object, 0, out.b1[lane], out.b2[lane]};
     }
     return hit;
 }
 
 }  // namespace
 
+unsigned Scene::intersect_primitive_packet(std::uint32_t object, const std::uint32_t* prims,
+                                           const RayLanes<kPacketWidth>& world, Hit* hits,
+                                           unsigned lanes) const {
+    if (object >= objects.size() || lanes == 0) return 0;
+    const Object& o = objects[object];
+    const RayLanes<kPacketWidth> rays = o.transform ? world.to_object(*o.transform) : world;
+    if (const auto* plane = std::get_if<Plane>(&o.shape))
+        return shape_packet(*plane, object, rays, hits, lanes);
+    if (const auto* sphere = std::get_if<Sphere>(&o.shape))
+        return shape_packet(*sphere, object, rays, hits, lanes);
+    if (const auto* triangle = std::get_if<Triangle>(&o.shape))
+        return shape_packet(*triangle, object, rays, hits, lanes);
+    const auto& mesh = meshes[std::get<MeshRef>(o.shape).mesh];
+    unsigned found = 0;
+    for (unsigned rest = lanes; rest != 0;) {  // the rays naming one triangle together
+        const std::uint32_t prim = prims[__builtin_ctz(rest)];
+        unsigned same = 0;
+        for (unsigned k = rest; k != 0; k &= k - 1)
+            if (prims[__builtin_ctz(k)] == prim) same |= 1u << __builtin_ctz(k);
+        rest &= ~same;
+        found |= mesh.intersect_triangle_packet(prim, rays, hits, same);
+    }
+    for (unsigned rest = found; rest != 0; rest &= rest - 1)
+        hits[__builtin_ctz(rest)].object = object;
+    return found;
+}
+
 unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) const {
     active &= (1u << kPacketWidth) - 1u;
     unsigned found = 0;
     std::array<float, kPacketWidth> t_max;
+    std::optional<RayLanes<kPacketWidth>> as_lanes;  // gathered for the first plane
     for (std::uint32_t i : unbounded_) {
         const Object& o = objects[i];
         if (const auto* plane = std::get_if<Plane>(&o.shape); plane && !o.transform && active) {
-            found |= plane_packet(*plane, i, rays, hits, active);
+            if (!as_lanes) as_lanes = RayLanes<kPacketWidth>::gather(rays, active);
+            found |= shape_packet(*plane, i, *as_lanes, hits, active);
             continue;
         }
         for (unsigned rest = active; rest != 0; rest &= rest - 1) {

@@ -100,6 +100,12 @@ class Scene {
     // One object, and of a mesh one triangle alone: what the item buffer names.
     bool intersect_primitive(std::uint32_t object, std::uint32_t prim, const Ray& r,
                              Hit& hit) const;
+    // The same for the rays of `lanes` (lanes of `rays`, hits[lane], triangle
+    // prims[lane]) at once, each with its own test's arithmetic (core/shape_packets.h):
+    // the item buffer's pixels that name one object. Returns the bits of those that hit.
+    unsigned intersect_primitive_packet(std::uint32_t object, const std::uint32_t* prims,
+                                        const RayLanes<kPacketWidth>& rays, Hit* hits,
+                                        unsigned lanes) const;
 
     SurfacePoint surface(const Ray& r, const Hit& hit) const;
     // What a checker of `material` on object `object` adds to its pattern point so that

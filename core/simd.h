@@ -9,6 +9,10 @@
 #include <immintrin.h>
 #endif
 
+// For the leaf tests handed to a traversal: GCC otherwise leaves them as calls. (On the
+// bunny the difference was within rtbench's run-to-run noise: docs/BENCHMARKS.md.)
+#define RT_FORCE_INLINE __attribute__((always_inline))
+
 namespace rt {
 
 using Float4 = float __attribute__((vector_size(16)));
@@ -23,11 +27,13 @@ struct Lanes;
 template <>
 struct Lanes<4> {
     using Float = Float4;
+    using Mask = Mask4;
 };
 #if defined(__AVX__)
 template <>
 struct Lanes<8> {
     using Float = Float8;
+    using Mask = Mask8;
 };
 #endif
 
@@ -61,11 +67,20 @@ inline unsigned bits(Mask4 m) { return (m[0] & 1u) | (m[1] & 2u) | (m[2] & 4u) |
 #endif
 
 inline Float4 vabs(Float4 a) { return vmax(a, -a); }
+#if defined(__SSE__)
+inline Float4 vsqrt(Float4 a) { return _mm_sqrt_ps(a); }  // correctly rounded, as std::sqrt
+#else
+inline Float4 vsqrt(Float4 a) {
+    for (int i = 0; i < 4; ++i) a[i] = __builtin_sqrtf(a[i]);
+    return a;
+}
+#endif
 
 #if defined(__AVX__)  // without AVX, eight lanes are not used (and would change the ABI)
 inline Float8 vmin(Float8 a, Float8 b) { return _mm256_min_ps(a, b); }
 inline Float8 vmax(Float8 a, Float8 b) { return _mm256_max_ps(a, b); }
 inline Float8 vabs(Float8 a) { return vmax(a, -a); }
+inline Float8 vsqrt(Float8 a) { return _mm256_sqrt_ps(a); }
 inline unsigned bits(Mask8 m) {
     return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
 }

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <utility>
 
+#include "core/ray_lanes.h"
 #include "core/simd.h"
 #include "core/triangle4.h"
 
@@ -42,22 +43,19 @@ struct ShearedRays {
     // The same from the rays themselves, with vector arithmetic (lane by lane
     // ShearedRay's: the same comparisons choose the axes, the same IEEE divisions).
     bool set(const Ray* rays, unsigned lanes) {
-        constexpr unsigned kAll = (1u << N) - 1u;
-        const int first = __builtin_ctz(lanes);
-        Float d[3];
-        for (int lane = 0; lane < N; ++lane) {
-            const Ray& r = rays[(lanes >> lane) & 1u ? lane : first];
-            for (int a = 0; a < 3; ++a) {
-                d[a][lane] = r.dir[a];
-                origin[a][lane] = r.origin[a];
-            }
-        }
+        return set(RayLanes<N>::gather(rays, lanes), lanes);
+    }
+    // Only the lanes of `lanes` count (the others may hold any real rays).
+    bool set(const RayLanes<N>& rays, unsigned lanes) {
+        const Float* d = rays.dir;
+        for (int a = 0; a < 3; ++a) origin[a] = rays.origin[a];
         const Float ax = vabs(d[0]), ay = vabs(d[1]), az = vabs(d[2]);
         const unsigned x_over_y = bits(ax > ay);
-        const unsigned z_is_x = x_over_y & bits(ax > az), z_is_y = ~x_over_y & bits(ay > az) & kAll;
-        if (z_is_x == kAll) {
+        const unsigned z_is_x = x_over_y & bits(ax > az) & lanes,
+                       z_is_y = ~x_over_y & bits(ay > az) & lanes;
+        if (z_is_x == lanes) {
             kz = 0;
-        } else if (z_is_y == kAll) {
+        } else if (z_is_y == lanes) {
             kz = 1;
         } else if ((z_is_x | z_is_y) == 0) {
             kz = 2;
@@ -66,8 +64,8 @@ struct ShearedRays {
         }
         kx = (kz + 1) % 3;
         ky = (kx + 1) % 3;
-        const unsigned negative = bits(d[kz] < 0.0f);
-        if (negative != 0 && negative != kAll) return false;
+        const unsigned negative = bits(d[kz] < 0.0f) & lanes;
+        if (negative != 0 && negative != lanes) return false;
         if (negative != 0) std::swap(kx, ky);  // keep the winding
         sx = d[kx] / d[kz];
         sy = d[ky] / d[kz];
@@ -93,15 +91,17 @@ struct ShearedRays {
 // Per ray, the nearest hit of the pack's triangles within its own (0, t_max): fills
 // t_max, lane (the triangle's lane in the pack), b1 and b2 of the rays that hit one and
 // returns their bits. kAnyHit: returns the rays that hit any, nothing else written.
+// `triangles`: the pack's lanes to test (the item buffer names one).
 template <bool kAnyHit, int N>
 [[gnu::always_inline]] inline unsigned intersect(const Triangle4& tri, const ShearedRays<N>& r,
                                                  unsigned lanes, float* t_max, int* lane_out,
-                                                 float* b1, float* b2) {
+                                                 float* b1, float* b2, unsigned triangles = 0xfu) {
     using Float = typename Lanes<N>::Float;
     Float limit;
     for (int lane = 0; lane < N; ++lane) limit[lane] = (lanes >> lane) & 1u ? t_max[lane] : 0.0f;
     unsigned found = 0;
     for (int j = 0; j < 4; ++j) {
+        if (((triangles >> j) & 1u) == 0) continue;
         const auto rel = [&](int vertex, int axis) {
             return splat<Float>(tri.v[vertex][axis][j]) - r.origin[axis];
         };
@@ -122,13 +122,14 @@ template <bool kAnyHit, int N>
             if (lanes == 0) return found;
             continue;
         }
+        const Float v = o.v / o.det, w = o.w / o.det;  // each lane's own IEEE division
         for (; candidates != 0; candidates &= candidates - 1) {
             const int ray = __builtin_ctz(candidates);
             limit[ray] = t[ray];
             t_max[ray] = t[ray];
             lane_out[ray] = j;
-            b1[ray] = o.v[ray] / o.det[ray];
-            b2[ray] = o.w[ray] / o.det[ray];
+            b1[ray] = v[ray];
+            b2[ray] = w[ray];
             found |= 1u << ray;
         }
     }

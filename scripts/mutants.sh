@@ -279,6 +279,24 @@ mutant packet-mesh-sees-world-rays core/scene.cpp \
 mutant item-buffer-interior-misses-a-column core/item_buffer.h \
     'for (int dx = 0; dx < 3; ++dx)' 'for (int dx = 0; dx < 2; ++dx)' \
     rt_tests $(unit 'ItemBuffer.Interior*')
+mutant item-buffer-packet-lanes-unmasked core/mesh_packet.cpp \
+    '1u << (at % kTriangle4Lanes));' '0xfu);' \
+    rt_tests $(unit 'ScenePackets.*')
+mutant sphere-lanes-take-the-near-root-only core/shape_packets.cpp \
+    'out.t = near ? t1 : t2;' 'out.t = t1;' \
+    rt_tests $(unit 'ShapeLanes.*')
+mutant triangle-lanes-edge-dropped core/shape_packets.cpp \
+    '(edge_ab < zero) | (edge_bc < zero) | (edge_ca < zero)' '(edge_ab < zero) | (edge_bc < zero)' \
+    rt_tests $(unit 'ShapeLanes.*')
+mutant ray-lanes-lose-the-translation core/ray_lanes.h \
+    '(m[2][row] * v[2] + m[3][row] * w)' '(m[2][row] * v[2])' \
+    rt_tests $(unit 'RayLanes.*')
+mutant interior-run-sees-no-side-neighbour core/item_buffer.h \
+    'dy * static_cast<std::ptrdiff_t>(width) + dx)' 'dy * static_cast<std::ptrdiff_t>(width))' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant item-buffer-run-never-falls-back core/renderer.cpp \
+    'const unsigned fall = all & ~settled;' 'const unsigned fall = 0;' \
+    rt_tests $(unit 'ItemBuffer.*')
 mutant small-scene-far-out-not-rebased core/scene_loader.cpp \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')

@@ -1,0 +1,171 @@
+// The mesh's packet tests: up to kPacketWidth rays through its BVH together, and the
+// item buffer's rays against one named triangle together (core/triangle_packet.h).
+#include "core/mesh.h"
+
+#include <array>
+#include <bit>
+
+#include "core/triangle_packet.h"
+
+namespace rt {
+
+namespace {
+
+// A leaf this many rays of a packet enter tests its triangles across the rays
+// (core/triangle_packet.h); fewer, each ray tests them alone.
+constexpr int kRaysAcross = 3;
+
+// The packet's rays set up for the watertight test, each alone and, where they share
+// their permutation, together.
+struct PacketShear {
+    std::array<ShearedRay, kPacketWidth> each;
+    ShearedRays<kPacketWidth> together;
+    bool shared = false;
+
+    // Set up at the first leaf a packet reaches (most of a camera's packets miss a mesh).
+    const Ray* rays;
+    unsigned active;
+    bool ready = false;
+
+    PacketShear(const Ray* r, unsigned a) : rays(r), active(a) {}
+    const PacketShear& get() {
+        if (ready) return *this;
+        ready = true;
+        shared = active != 0 && together.set(rays, active);
+        for (unsigned m = active; m != 0; m &= m - 1) {
+            const unsigned lane = __builtin_ctz(m);
+            each[lane] =
+                shared ? together.lane_ray(static_cast<int>(lane)) : ShearedRay(rays[lane]);
+        }
+        return *this;
+    }
+    bool across(unsigned lanes) const { return shared && std::popcount(lanes) >= kRaysAcross; }
+};
+
+}  // namespace
+
+unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned active) const {
+    std::array<float, kPacketWidth> t_max;
+    for (unsigned m = active; m != 0; m &= m - 1)
+        t_max[__builtin_ctz(m)] = hits[__builtin_ctz(m)].t;
+    PacketShear lazy_shear(rays, active);
+    unsigned found = 0;
+    accel_.traverse_packet<false>(
+        rays, t_max.data(), active,
+        [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
+            unsigned hit = 0;
+            const std::uint32_t start = first_pack(leaf);
+            const PacketShear& shear = lazy_shear.get();
+            const auto record = [&](unsigned ray, std::uint32_t pack, int lane, float b1,
+                                    float b2) {
+                Hit& out = hits[ray];
+                out.prim = pack_prims_[kTriangle4Lanes * pack + static_cast<std::uint32_t>(lane)];
+                out.b1 = b1;
+                out.b2 = b2;
+                hit |= 1u << ray;
+            };
+            if (shear.across(lanes)) {
+                std::array<int, kPacketWidth> lane;
+                std::array<float, kPacketWidth> b1, b2;
+                for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
+                    unsigned h =
+                        rt::intersect<false>(packs_[start + k], shear.together, lanes, t_max.data(),
+                                             lane.data(), b1.data(), b2.data());
+                    for (; h != 0; h &= h - 1) {
+                        const unsigned ray = __builtin_ctz(h);
+                        record(ray, start + k, lane[ray], b1[ray], b2[ray]);
+                    }
+                }
+            } else {
+                for (; lanes != 0; lanes &= lanes - 1) {
+                    const unsigned ray = __builtin_ctz(lanes);
+                    for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
+                        const Triangle4Hit h =
+                            rt::intersect(packs_[start + k], shear.each[ray], t_max[ray]);
+                        if (h.lane < 0) continue;
+                        t_max[ray] = h.t;
+                        record(ray, start + k, h.lane, h.b1, h.b2);
+                    }
+                }
+            }
+            found |= hit;
+            return hit;
+        });
+    for (unsigned m = found; m != 0; m &= m - 1) {
+        const unsigned lane = __builtin_ctz(m);
+        hits[lane].t = t_max[lane];
+    }
+    return found;
+}
+
+unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsigned active) const {
+    std::array<float, kPacketWidth> limits;
+    for (unsigned m = active; m != 0; m &= m - 1)
+        limits[__builtin_ctz(m)] = t_max[__builtin_ctz(m)];
+    PacketShear lazy_shear(rays, active);
+    unsigned blocked = 0;
+    accel_.traverse_packet<true>(
+        rays, limits.data(), active,
+        [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
+            unsigned hit = 0;
+            const std::uint32_t start = first_pack(leaf);
+            const PacketShear& shear = lazy_shear.get();
+            if (shear.across(lanes)) {
+                for (std::uint32_t k = 0; kTriangle4Lanes * k < count && lanes != 0; ++k) {
+                    const unsigned h =
+                        rt::intersect<true>(packs_[start + k], shear.together, lanes, limits.data(),
+                                            nullptr, nullptr, nullptr);
+                    hit |= h;
+                    lanes &= ~h;
+                }
+            } else {
+                for (; lanes != 0; lanes &= lanes - 1) {
+                    const unsigned ray = __builtin_ctz(lanes);
+                    for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
+                        if (rt::intersect(packs_[start + k], shear.each[ray], limits[ray]).lane >=
+                            0) {
+                            hit |= 1u << ray;
+                            break;
+                        }
+                    }
+                }
+            }
+            blocked |= hit;
+            return hit;
+        });
+    return blocked;
+}
+
+unsigned TriangleMesh::intersect_triangle_packet(std::uint32_t prim,
+                                                 const RayLanes<kPacketWidth>& rays, Hit* hits,
+                                                 unsigned lanes) const {
+    if (prim >= prim_lane_.size() || lanes == 0) return 0;
+    const std::uint32_t at = prim_lane_[prim];
+    ShearedRays<kPacketWidth> together;
+    if (std::popcount(lanes) < kRaysAcross || !together.set(rays, lanes)) {
+        unsigned found = 0;
+        for (; lanes != 0; lanes &= lanes - 1) {
+            const unsigned ray = __builtin_ctz(lanes);
+            if (intersect_triangle(prim, rays.lane(static_cast<int>(ray)), hits[ray]))
+                found |= 1u << ray;
+        }
+        return found;
+    }
+    std::array<float, kPacketWidth> t_max;
+    std::array<int, kPacketWidth> lane;
+    std::array<float, kPacketWidth> b1, b2;
+    for (unsigned m = lanes; m != 0; m &= m - 1) t_max[__builtin_ctz(m)] = hits[__builtin_ctz(m)].t;
+    const unsigned found =
+        rt::intersect<false>(packs_[at / kTriangle4Lanes], together, lanes, t_max.data(),
+                             lane.data(), b1.data(), b2.data(), 1u << (at % kTriangle4Lanes));
+    for (unsigned m = found; m != 0; m &= m - 1) {
+        const unsigned ray = __builtin_ctz(m);
+        hits[ray].t = t_max[ray];
+        hits[ray].prim = prim;
+        hits[ray].b1 = b1[ray];
+        hits[ray].b2 = b2[ray];
+    }
+    return found;
+}
+
+}  // namespace rt

@@ -1,0 +1,237 @@
+// The item buffer's pixels, eight at a time: the shapes' tests across rays
+// (core/shape_packets.h) against each ray's own test, the transform of ray lanes, the
+// named primitives of a packet against Scene::intersect_primitive, the 3 x 3 check of a
+// run of pixels against the pixel's own, and a frame rendered from a perfect item buffer
+// against the frame traced from scratch. Every comparison is bit for bit.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/renderer.h"
+#include "core/scene.h"
+#include "core/shape_packets.h"
+#include "core/tessellate.h"
+#include "test_util.h"
+
+namespace rt {
+namespace {
+
+constexpr int kW = kPacketWidth;
+constexpr unsigned kAll = (1u << kW) - 1u;
+
+vec3 random_in(std::mt19937& rng, float extent) {
+    std::uniform_real_distribution<float> u(-extent, extent);
+    return {u(rng), u(rng), u(rng)};
+}
+
+// Rays at a shape from near and far, from inside it, grazing, parallel, with no direction,
+// and with a NaN: lane k of packet i.
+Ray test_ray(std::mt19937& rng, int i, int k, const vec3& target) {
+    const vec3 origin = random_in(rng, i % 4 == 0 ? 1.0f : 12.0f);
+    vec3 dir = target + random_in(rng, 1.5f) - origin;
+    if (i % 7 == 1 && k == 2) dir = vec3(0.0f);
+    if (i % 7 == 2 && k == 5 % kW) dir.y = 0.0f;
+    if (i % 11 == 3 && k == 1) dir.x = std::nanf("");
+    if (i % 13 == 4) dir *= 1e-3f;  // short, unnormalised directions keep t
+    return Ray{origin, dir};
+}
+
+template <class Shape>
+void expect_lanes_match(const Shape& shape, const vec3& target, bool barycentrics) {
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<float> limit(0.5f, 30.0f);
+    int hits = 0;
+    for (int i = 0; i < 3000; ++i) {
+        std::array<Ray, kW> rays;
+        std::array<float, kW> t_max;
+        for (int k = 0; k < kW; ++k) {
+            rays[k] = test_ray(rng, i, k, target);
+            t_max[k] = i % 3 == 0 ? limit(rng) : kInfinity;
+        }
+        const unsigned lanes = i % 5 == 0 ? ((static_cast<unsigned>(rng()) | 1u) & kAll) : kAll;
+        LaneHits<kW> out;
+        for (int k = 0; k < kW; ++k) out.t_max[k] = t_max[k];
+        const unsigned found =
+            intersect_lanes(shape, RayLanes<kW>::gather(rays.data(), lanes), lanes, out);
+        EXPECT_EQ(found & ~lanes, 0u);
+        for (int k = 0; k < kW; ++k) {
+            if (!((lanes >> k) & 1u)) continue;
+            Hit alone;
+            alone.t = t_max[k];
+            const bool hit = shape.intersect(rays[k], alone);
+            ASSERT_EQ(((found >> k) & 1u) != 0, hit) << "packet " << i << " lane " << k;
+            if (!hit) continue;
+            ++hits;
+            ASSERT_EQ(out.t[k], alone.t) << "packet " << i << " lane " << k;
+            if (!barycentrics) continue;
+            ASSERT_EQ(out.b1[k], alone.b1) << "packet " << i << " lane " << k;
+            ASSERT_EQ(out.b2[k], alone.b2) << "packet " << i << " lane " << k;
+        }
+    }
+    EXPECT_GT(hits, 3000);
+}
+
+TEST(ShapeLanes, PlaneGivesEachRayItsOwnT) {
+    expect_lanes_match(Plane{glm::normalize(vec3(0.2f, 1.0f, -0.3f)), -0.5f}, vec3(0, -1, 0),
+                       false);
+}
+
+TEST(ShapeLanes, SphereGivesEachRayItsOwnT) {
+    expect_lanes_match(Sphere{{0.5f, -0.25f, 0.75f}, 1.5f}, vec3(0.5f, -0.25f, 0.75f), false);
+}
+
+TEST(ShapeLanes, TriangleGivesEachRayItsOwnTAndBarycentrics) {
+    const Triangle tri{{-2, -1, 0.5f}, {2, -1.5f, -0.5f}, {0.25f, 2, 0}};
+    expect_lanes_match(tri, vec3(0.1f, 0.0f, 0.0f), true);
+}
+
+TEST(RayLanes, ToObjectIsEachRaysOwnTransform) {
+    const auto t = Transform::from_matrix(
+        glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), vec3(2.7f, 0.75f, -1.2f)), 0.6f,
+                               glm::normalize(vec3(0.2f, 1.0f, 0.4f))),
+                   vec3(0.9f, 0.35f, 0.35f)));
+    ASSERT_TRUE(t);
+    std::mt19937 rng(43);
+    for (int i = 0; i < 500; ++i) {
+        std::array<Ray, kW> rays;
+        for (Ray& r : rays) r = Ray{random_in(rng, 100.0f), random_in(rng, 1.0f)};
+        const RayLanes<kW> local = RayLanes<kW>::gather(rays.data(), kAll).to_object(*t);
+        for (int k = 0; k < kW; ++k) {
+            const Ray alone = t->to_object(rays[k]);
+            const Ray lane = local.lane(k);
+            for (int a = 0; a < 3; ++a) {
+                ASSERT_EQ(lane.origin[a], alone.origin[a]) << i;
+                ASSERT_EQ(lane.dir[a], alone.dir[a]) << i;
+            }
+        }
+    }
+}
+
+// A scene of every kind of object, some under a transform, the mesh instanced twice.
+Scene every_kind_scene() {
+    SceneDescription d;
+    d.materials.emplace_back();
+    TriangleMesh ball = tessellate_unit_sphere(16);
+    d.meshes.push_back(std::move(ball));
+    const auto moved = [](const vec3& by, float scale) {
+        return Transform::from_matrix(glm::scale(
+            glm::rotate(glm::translate(glm::mat4(1.0f), by), 0.4f, vec3(0, 1, 0)), vec3(scale)));
+    };
+    d.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -2}, 0, {}});
+    d.objects.push_back(Object{"ball", Sphere{{-2, 0, 0}, 1.0f}, 0, {}});
+    d.objects.push_back(Object{"egg", Sphere{{0, 0, 0}, 1.0f}, 0, moved({2, 0, 0}, 0.8f)});
+    d.objects.push_back(Object{"tri", Triangle{{-1, 2, -1}, {1, 2, -1}, {0, 3.5f, -1}}, 0, {}});
+    d.objects.push_back(Object{"mesh", MeshRef{0, true}, 0, {}});
+    d.objects.push_back(Object{"moved mesh", MeshRef{0, true}, 0, moved({0, -1, 2}, 0.7f)});
+    d.camera = Camera::look_at({0, 1, 9}, {0, 0, 0}, {0, 1, 0}, 45.0f, 64, 48);
+    return Scene(std::move(d));
+}
+
+// Rays a packet sends at one object, the triangles named as the item buffer names them:
+// for a mesh, runs of the same triangle (tested across the rays) beside single ones.
+TEST(ScenePackets, NamedPrimitivesGiveEachRayItsOwnHit) {
+    const Scene scene = every_kind_scene();
+    std::mt19937 rng(47);
+    int hits = 0;
+    for (std::uint32_t object = 0; object < scene.objects.size(); ++object) {
+        const Aabb box = scene.object_bounds(scene.objects[object]);
+        const vec3 centre = box.empty() ? vec3(0, -2, 0) : 0.5f * (box.lo + box.hi);
+        const bool mesh = std::holds_alternative<MeshRef>(scene.objects[object].shape);
+        const auto triangles =
+            mesh ? static_cast<std::uint32_t>(scene.meshes[0].triangles.size()) : 1u;
+        for (int i = 0; i < 400; ++i) {
+            std::array<Ray, kW> rays;
+            std::array<std::uint32_t, kW> prims;
+            const vec3 eye = vec3(0, 1, 9) + random_in(rng, 1.0f);
+            const std::uint32_t shared = static_cast<std::uint32_t>(rng()) % triangles;
+            for (int k = 0; k < kW; ++k) {
+                rays[k] = Ray{eye, centre + random_in(rng, 0.6f) - eye};
+                prims[k] = k % 3 == 2 ? static_cast<std::uint32_t>(rng()) % triangles : shared;
+            }
+            const unsigned lanes = i % 4 == 0 ? ((static_cast<unsigned>(rng()) | 2u) & kAll) : kAll;
+            std::array<Hit, kW> together;
+            const unsigned found = scene.intersect_primitive_packet(
+                object, prims.data(), RayLanes<kW>::gather(rays.data(), kAll), together.data(),
+                lanes);
+            EXPECT_EQ(found & ~lanes, 0u);
+            for (int k = 0; k < kW; ++k) {
+                if (!((lanes >> k) & 1u)) continue;
+                Hit alone;
+                const bool hit = scene.intersect_primitive(object, prims[k], rays[k], alone);
+                ASSERT_EQ(((found >> k) & 1u) != 0, hit) << object << " " << i << " " << k;
+                if (!hit) continue;
+                ++hits;
+                ASSERT_EQ(together[k].t, alone.t) << object << " " << i << " " << k;
+                ASSERT_EQ(together[k].object, object);
+                ASSERT_EQ(together[k].prim, alone.prim);
+                ASSERT_EQ(together[k].b1, alone.b1);
+                ASSERT_EQ(together[k].b2, alone.b2);
+            }
+        }
+    }
+    EXPECT_GT(hits, 6000);
+}
+
+// Small regions of ids, runs of every length from every column, the image's edges too.
+TEST(ItemBuffer, ARunsCheckIsEachPixelsOwn) {
+    ItemBuffer ib(37, 11);
+    std::mt19937 rng(53);
+    for (int round = 0; round < 20; ++round) {
+        for (std::uint32_t& id : ib.object) id = 0;
+        for (int blob = 0; blob < 6; ++blob) {
+            const int x0 = static_cast<int>(rng() % 37), y0 = static_cast<int>(rng() % 11);
+            const int w = 1 + static_cast<int>(rng() % 12), h = 1 + static_cast<int>(rng() % 6);
+            const std::uint32_t id = 1 + static_cast<std::uint32_t>(rng() % 3);
+            for (int y = y0; y < std::min(11, y0 + h); ++y)
+                for (int x = x0; x < std::min(37, x0 + w); ++x) ib.object[ib.index(x, y)] = id;
+        }
+        for (int y = 0; y < ib.height; ++y) {
+            for (int x = 0; x < ib.width; ++x) {
+                for (int n = 1; n <= 20 && x + n <= ib.width; ++n) {
+                    unsigned own = 0, same = 0;
+                    const std::uint32_t id = ib.object[ib.index(x, y)];
+                    for (int k = 0; k < n; ++k) {
+                        own |= static_cast<unsigned>(ib.interior(x + k, y)) << k;
+                        same |= static_cast<unsigned>(ib.object[ib.index(x + k, y)] == id) << k;
+                    }
+                    ASSERT_EQ(ib.interior_run(x, y, n), own) << x << "," << y << " n " << n;
+                    ASSERT_EQ(ItemBuffer::same_run(ib.object, ib.index(x, y), n, id), same);
+                }
+            }
+        }
+    }
+}
+
+// The item buffer a perfect rasteriser would give (each pixel centre's first hit, traced):
+// a frame from it is the frame from scratch, bit for bit, with the pixels on silhouettes
+// traced as packets and the others tested against what they name.
+TEST(ItemBuffer, AFrameFromAPerfectItemBufferIsTheFrameFromScratch) {
+    for (const std::string& name : test::shipped_scene_names()) {
+        const Scene scene(test::shipped_scene(name, 96, 54));
+        const Camera& camera = scene.camera;
+        ItemBuffer ib(camera.cols, camera.rows);
+        for (int y = 0; y < camera.rows; ++y) {
+            for (int x = 0; x < camera.cols; ++x) {
+                Hit hit;
+                if (!scene.intersect(camera.ray(x, y), hit)) continue;
+                ib.object[ib.index(x, y)] = hit.object + 1;
+                ib.prim[ib.index(x, y)] = hit.prim;
+            }
+        }
+        RenderOptions options;
+        options.threads = 2;
+        RenderStats with_stats;
+        const Image from_scratch = render(scene, options);
+        const Image with = render(scene, options, &with_stats, {}, {}, &ib);
+        EXPECT_EQ(with.pixels, from_scratch.pixels) << name;
+        EXPECT_LT(with_stats.item_buffer_fallbacks, camera.cols * camera.rows * 3 / 4) << name;
+        EXPECT_GT(with_stats.item_buffer_fallbacks, 0u) << name;
+    }
+}
+
+}  // namespace
+}  // namespace rt
