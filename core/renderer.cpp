@@ -1,10 +1,11 @@
 #include "core/renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
 #include <cmath>
-#include <optional>
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
@@ -54,19 +55,84 @@ using detail::Tile;
 using detail::tile_count;
 using detail::TileRunner;
 
+// A tile's camera rays for sample s, row by row: one Ray per pixel (the shading reads
+// them), and for one sample per pixel (the pixel centres) each column's and each row's
+// term of the direction, computed once (Camera::across, Camera::upward): the same rays as
+// Camera::ray without two divisions a pixel, and a row's run of pixels as lanes
+// (RayLanes) from the terms, not read back from its Rays one by one.
+class TileRays {
+  public:
+    std::vector<Ray> rays;
+
+    void make(const Camera& camera, const Tile& t, int s, int spp) {
+        t_ = t;
+        eye_ = camera.eye;
+        const int w = t.x1 - t.x0;
+        rays.resize(static_cast<std::size_t>(w) * (t.y1 - t.y0));
+        centres_ = spp <= 1;
+        std::size_t i = 0;
+        if (!centres_) {
+            for (int y = t.y0; y < t.y1; ++y)
+                for (int x = t.x0; x < t.x1; ++x) rays[i++] = pixel_sample(camera, x, y, s, spp);
+            return;
+        }
+        columns_.resize(static_cast<std::size_t>(w));
+        for (int x = t.x0; x < t.x1; ++x)
+            columns_[x - t.x0] = camera.across(static_cast<float>(x) + 0.5f);
+        // By axis, padded to whole runs with the last column (real numbers in every lane).
+        const std::size_t padded =
+            (columns_.size() + kPacketWidth - 1) / kPacketWidth * kPacketWidth;
+        for (int a = 0; a < 3; ++a) {
+            by_axis_[a].resize(padded);
+            for (std::size_t k = 0; k < padded; ++k)
+                by_axis_[a][k] = columns_[std::min(k, columns_.size() - 1)][a];
+        }
+        rows_.resize(static_cast<std::size_t>(t.y1 - t.y0));
+        for (int y = t.y0; y < t.y1; ++y) {
+            const vec3 row = rows_[y - t.y0] = camera.upward(static_cast<float>(y) + 0.5f);
+            for (const vec3& column : columns_) rays[i++] = Ray{eye_, column + row};
+        }
+    }
+
+    // The rays of pixels x .. x + n - 1 of row y as lanes (n <= kPacketWidth).
+    RayLanes<kPacketWidth> lanes(int x, int y, int n) const {
+        using Float = Lanes<kPacketWidth>::Float;
+        const std::size_t column = static_cast<std::size_t>(x - t_.x0);
+        if (!centres_) {
+            const std::size_t i = static_cast<std::size_t>(y - t_.y0) * (t_.x1 - t_.x0) + column;
+            return RayLanes<kPacketWidth>::gather(&rays[i], (1u << n) - 1u);
+        }
+        const vec3& row = rows_[static_cast<std::size_t>(y - t_.y0)];
+        RayLanes<kPacketWidth> out;
+        for (int a = 0; a < 3; ++a) {
+            Float c;
+            std::memcpy(&c, &by_axis_[a][column], sizeof c);
+            out.origin[a] = splat<Float>(eye_[a]);
+            out.dir[a] = c + row[a];  // column + row, as the Ray's
+        }
+        return out;
+    }
+
+  private:
+    Tile t_{};
+    vec3 eye_{0.0f};
+    bool centres_ = true;
+    std::vector<vec3> columns_, rows_;
+    std::array<std::vector<float>, 3> by_axis_;
+};
+
 // The first hits of pixels x .. x + n - 1 of row y (n <= kPacketWidth) from the item
 // buffer: the pixels inside one object's region (ItemBuffer::interior_run) are tested
 // against the object (and triangle) named, together where they name the same one; the
 // others, and those whose named primitive turns out to miss, are traced through the
 // scene as a packet. Returns how many were.
-int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int n, const Ray* rays,
-                    Hit* hits) {
+int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int n,
+                    const RayLanes<kPacketWidth>& lanes, const Ray* rays, Hit* hits) {
     const unsigned all = (1u << n) - 1u;
     for (int k = 0; k < n; ++k) hits[k] = Hit{};
     const std::size_t at = ib.index(x, y);
     const std::uint32_t* ids = &ib.object[at];
     unsigned settled = 0;
-    std::optional<RayLanes<kPacketWidth>> as_lanes;  // gathered for the first object named
     for (unsigned rest = ib.interior_run(x, y, n); rest != 0;) {
         const std::uint32_t id = ids[__builtin_ctz(rest)];
         const unsigned same = ItemBuffer::same_run(ib.object, at, n, id) & rest;
@@ -75,8 +141,7 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int 
             settled |= same;  // nothing here nor around it
             continue;
         }
-        if (!as_lanes) as_lanes = RayLanes<kPacketWidth>::gather(rays, all);
-        settled |= scene.intersect_primitive_packet(id - 1, &ib.prim[at], *as_lanes, hits, same);
+        settled |= scene.intersect_primitive_packet(id - 1, &ib.prim[at], lanes, hits, same);
     }
     const unsigned fall = all & ~settled;
     if (fall == 0) return 0;
@@ -88,14 +153,14 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int 
 // The first hits of a tile's pixels from the item buffer, a row's run of kPacketWidth
 // pixels at a time. Returns how many were traced through the scene.
 std::uint64_t item_buffer_hits(const Scene& scene, const ItemBuffer& ib, const Tile& t,
-                               const std::vector<Ray>& rays, std::vector<Hit>& hits) {
+                               const TileRays& rays, std::vector<Hit>& hits) {
     std::uint64_t fell = 0;
     std::size_t i = 0;
     for (int y = t.y0; y < t.y1; ++y) {
         for (int x = t.x0; x < t.x1; x += kPacketWidth) {
             const int n = std::min(kPacketWidth, t.x1 - x);
-            fell +=
-                static_cast<std::uint64_t>(item_buffer_run(scene, ib, x, y, n, &rays[i], &hits[i]));
+            fell += static_cast<std::uint64_t>(
+                item_buffer_run(scene, ib, x, y, n, rays.lanes(x, y, n), &rays.rays[i], &hits[i]));
             i += static_cast<std::size_t>(n);
         }
     }
@@ -110,27 +175,6 @@ void primary_packets(const Scene& scene, const std::vector<Ray>& rays, std::vect
         const std::size_t n = std::min<std::size_t>(kPacketWidth, rays.size() - i);
         for (std::size_t k = 0; k < n; ++k) hits[i + k] = Hit{};
         scene.intersect_packet(&rays[i], &hits[i], (1u << n) - 1u);
-    }
-}
-
-// Sample s of every pixel of tile t, row by row. For one sample per pixel (the pixel
-// centres) each column's and each row's term of the direction is computed once
-// (Camera::across, Camera::upward): the same rays as Camera::ray, without two divisions
-// a pixel.
-void tile_rays(const Camera& camera, const Tile& t, int s, int spp, std::vector<Ray>& rays,
-               std::vector<vec3>& columns) {
-    std::size_t i = 0;
-    if (spp > 1) {
-        for (int y = t.y0; y < t.y1; ++y)
-            for (int x = t.x0; x < t.x1; ++x) rays[i++] = pixel_sample(camera, x, y, s, spp);
-        return;
-    }
-    columns.resize(static_cast<std::size_t>(t.x1 - t.x0));
-    for (int x = t.x0; x < t.x1; ++x)
-        columns[x - t.x0] = camera.across(static_cast<float>(x) + 0.5f);
-    for (int y = t.y0; y < t.y1; ++y) {
-        const vec3 row = camera.upward(static_cast<float>(y) + 0.5f);
-        for (const vec3& column : columns) rays[i++] = Ray{camera.eye, column + row};
     }
 }
 
@@ -182,27 +226,22 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
         const Tracer mine = p.tracer;
         const int w = t.x1 - t.x0;
         const std::size_t n = static_cast<std::size_t>(w) * (t.y1 - t.y0);
-        std::vector<Ray> rays(n);
+        TileRays rays;
         std::vector<Hit> hits(n);
-        std::vector<vec3> columns;
         double primary = 0.0, shade = 0.0;
         std::uint64_t fell = 0;
         for (int s = 0; s < p.spp; ++s) {
             Stopwatch lap;
-            tile_rays(p.camera, t, s, p.spp, rays, columns);
-            if (p.item_buffer) {
-                if (getenv("RT_SKIP")) {
-                    for (auto& h : hits) h = Hit{};
-                } else
-                    fell += item_buffer_hits(p.scene, *p.item_buffer, t, rays, hits);
-            } else {
-                primary_packets(p.scene, rays, hits);
-            }
+            rays.make(p.camera, t, s, p.spp);
+            if (p.item_buffer)
+                fell += item_buffer_hits(p.scene, *p.item_buffer, t, rays, hits);
+            else
+                primary_packets(p.scene, rays.rays, hits);
             local.primary += n;
             primary += lap.lap();
             for (int y = t.y0, i = 0; y < t.y1; ++y)
                 for (int x = t.x0; x < t.x1; ++x, ++i)
-                    p.image.at(x, y) += p.finite(mine.shade_hit(rays[i], hits[i], local));
+                    p.image.at(x, y) += p.finite(mine.shade_hit(rays.rays[i], hits[i], local));
             shade += lap.lap();
         }
         p.fallbacks.fetch_add(fell, std::memory_order_relaxed);
