@@ -12,7 +12,7 @@ namespace rt {
 template <int N>
 struct RayLanes {
     using Float = typename Lanes<N>::Float;
-    Float origin[3]{}, dir[3]{};
+    Float origin[3], dir[3];  // every lane written by whoever makes one
 
     // rays[lane] for each bit of `lanes`; the other lanes copy the first of them (real
     // numbers, so no lane computes a NaN or a trap).

@@ -121,11 +121,28 @@ class TileRays {
     std::array<std::vector<float>, 3> by_axis_;
 };
 
+// The objects named around pixels x0 .. x1 of row y (their 3 x 3 blocks), each once.
+int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* out) {
+    int count = 0;
+    for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {
+        for (int x = std::max(0, x0 - 1); x <= std::min(ib.width - 1, x1 + 1); ++x) {
+            const std::uint32_t id = ib.object[ib.index(x, row)];
+            if (id != ItemBuffer::kEmpty && std::find(out, out + count, id - 1) == out + count)
+                out[count++] = id - 1;
+        }
+    }
+    return count;
+}
+
 // The first hits of pixels x .. x + n - 1 of row y (n <= kPacketWidth) from the item
-// buffer: the pixels inside one object's region (ItemBuffer::interior_run) are tested
-// against the object (and triangle) named, together where they name the same one; the
-// others, and those whose named primitive turns out to miss, are traced through the
-// scene as a packet. Returns how many were.
+// buffer. A pixel inside one object's region (ItemBuffer::interior_run) is tested against
+// the object (and triangle) named, together with the others of the run that name the same
+// one; inside the background it is background (the raster draws the planes to within a
+// fraction of a pixel of their horizon: GpuScene::plane_extent). A pixel on an edge, or whose named
+// primitive turns out to miss, is tested against every object named around it (and the planes), not
+// the whole scene: the raster and the tracer sample the same pixel centres, and where they disagree
+// (the raster's tessellated spheres, rounding at an edge) the object the ray meets is named next to
+// it. Returns how many pixels were on an edge or missed.
 int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int n,
                     const RayLanes<kPacketWidth>& lanes, const Ray* rays, Hit* hits) {
     const unsigned all = (1u << n) - 1u;
@@ -143,11 +160,14 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int 
         }
         settled |= scene.intersect_primitive_packet(id - 1, &ib.prim[at], lanes, hits, same);
     }
-    const unsigned fall = all & ~settled;
-    if (fall == 0) return 0;
-    for (unsigned k = fall; k != 0; k &= k - 1) hits[__builtin_ctz(k)] = Hit{};
-    scene.intersect_packet(rays, hits, fall);
-    return std::popcount(fall);
+    const unsigned edge = all & ~settled;
+    if (edge == 0) return 0;
+    for (unsigned k = edge; k != 0; k &= k - 1) hits[__builtin_ctz(k)] = Hit{};
+    std::array<std::uint32_t, 3 * (kPacketWidth + 2)> around;
+    const int count =
+        objects_around(ib, x + __builtin_ctz(edge), x + 31 - __builtin_clz(edge), y, around.data());
+    scene.intersect_among(around.data(), count, rays, lanes, hits, edge);
+    return std::popcount(edge);
 }
 
 // The first hits of a tile's pixels from the item buffer, a row's run of kPacketWidth

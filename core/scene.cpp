@@ -161,7 +161,9 @@ unsigned Scene::intersect_primitive_packet(std::uint32_t object, const std::uint
                                            unsigned lanes) const {
     if (object >= objects.size() || lanes == 0) return 0;
     const Object& o = objects[object];
-    const RayLanes<kPacketWidth> rays = o.transform ? world.to_object(*o.transform) : world;
+    RayLanes<kPacketWidth> local;
+    if (o.transform) local = world.to_object(*o.transform);
+    const RayLanes<kPacketWidth>& rays = o.transform ? local : world;
     if (const auto* plane = std::get_if<Plane>(&o.shape))
         return shape_packet(*plane, object, rays, hits, lanes);
     if (const auto* sphere = std::get_if<Sphere>(&o.shape))
@@ -183,10 +185,8 @@ unsigned Scene::intersect_primitive_packet(std::uint32_t object, const std::uint
     return found;
 }
 
-unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) const {
-    active &= (1u << kPacketWidth) - 1u;
+unsigned Scene::intersect_unbounded_packet(const Ray* rays, Hit* hits, unsigned active) const {
     unsigned found = 0;
-    std::array<float, kPacketWidth> t_max;
     std::optional<RayLanes<kPacketWidth>> as_lanes;  // gathered for the first plane
     for (std::uint32_t i : unbounded_) {
         const Object& o = objects[i];
@@ -200,6 +200,30 @@ unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) co
             if (intersect_object(i, rays[lane], hits[lane])) found |= 1u << lane;
         }
     }
+    return found;
+}
+
+unsigned Scene::intersect_among(const std::uint32_t* among, int count, const Ray* rays,
+                                const RayLanes<kPacketWidth>& as_lanes, Hit* hits,
+                                unsigned lanes) const {
+    lanes &= (1u << kPacketWidth) - 1u;
+    if (lanes == 0) return 0;
+    unsigned found = 0;
+    for (std::uint32_t i : unbounded_)
+        found |= intersect_primitive_packet(i, nullptr, as_lanes, hits, lanes);
+    for (int k = 0; k < count; ++k) {
+        const std::uint32_t object = among[k];
+        if (object >= objects.size() || std::holds_alternative<Plane>(objects[object].shape))
+            continue;  // the planes were tested
+        found |= intersect_object_packet(object, rays, hits, lanes);
+    }
+    return found;
+}
+
+unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) const {
+    active &= (1u << kPacketWidth) - 1u;
+    unsigned found = intersect_unbounded_packet(rays, hits, active);
+    std::array<float, kPacketWidth> t_max;
     for (unsigned rest = active; rest != 0; rest &= rest - 1) {
         const unsigned lane = __builtin_ctz(rest);
         t_max[lane] = hits[lane].t;

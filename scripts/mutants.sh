@@ -297,6 +297,10 @@ mutant interior-run-sees-no-side-neighbour core/item_buffer.h \
 mutant item-buffer-run-never-falls-back core/renderer.cpp \
     'const unsigned fall = all & ~settled;' 'const unsigned fall = 0;' \
     rt_tests $(unit 'ItemBuffer.*')
+mutant edge-pixels-look-along-their-row-only core/renderer.cpp \
+    'for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {' \
+    'for (int row = y; row <= y; ++row) {' \
+    rt_tests $(unit 'ItemBuffer.*')
 mutant small-scene-far-out-not-rebased core/scene_loader.cpp \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')
