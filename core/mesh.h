@@ -52,6 +52,10 @@ struct TriangleMesh {
     // they are several and share ShearedRay's axes: returns the bits of those that hit.
     unsigned intersect_triangle_packet(std::uint32_t prim, const RayLanes<kPacketWidth>& rays,
                                        Hit* hits, unsigned lanes) const;
+    // Each ray of `lanes` against its own triangle prims[lane], the same way.
+    unsigned intersect_triangles_packet(const std::uint32_t* prims,
+                                        const RayLanes<kPacketWidth>& rays, Hit* hits,
+                                        unsigned lanes) const;
 
     // The hit's shading normal (interpolated, or the face normal) and face normal, unnormalised.
     vec3 face_normal(std::uint32_t tri) const;

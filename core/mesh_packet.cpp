@@ -168,4 +168,49 @@ unsigned TriangleMesh::intersect_triangle_packet(std::uint32_t prim,
     return found;
 }
 
+unsigned TriangleMesh::intersect_triangles_packet(const std::uint32_t* prims,
+                                                  const RayLanes<kPacketWidth>& rays, Hit* hits,
+                                                  unsigned lanes) const {
+    using Float = Lanes<kPacketWidth>::Float;
+    for (unsigned m = lanes; m != 0; m &= m - 1)
+        if (prims[__builtin_ctz(m)] >= prim_lane_.size()) lanes &= ~(1u << __builtin_ctz(m));
+    if (lanes == 0) return 0;
+    const std::uint32_t first = prims[__builtin_ctz(lanes)];
+    bool one = true;
+    for (unsigned m = lanes; m != 0; m &= m - 1) one &= prims[__builtin_ctz(m)] == first;
+    if (one) return intersect_triangle_packet(first, rays, hits, lanes);
+    ShearedRays<kPacketWidth> together;
+    if (std::popcount(lanes) < kRaysAcross || !together.set(rays, lanes)) {
+        unsigned found = 0;
+        for (; lanes != 0; lanes &= lanes - 1) {
+            const unsigned ray = __builtin_ctz(lanes);
+            if (intersect_triangle(prims[ray], rays.lane(static_cast<int>(ray)), hits[ray]))
+                found |= 1u << ray;
+        }
+        return found;
+    }
+    // Each ray's own triangle, read from its pack, as the lanes.
+    Float v[3][3], limit;
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        const bool active = ((lanes >> lane) & 1u) != 0;
+        const std::uint32_t at = prim_lane_[active ? prims[lane] : first];
+        const Triangle4& pack = packs_[at / kTriangle4Lanes];
+        const std::uint32_t j = at % kTriangle4Lanes;
+        for (int vertex = 0; vertex < 3; ++vertex)
+            for (int axis = 0; axis < 3; ++axis) v[vertex][axis][lane] = pack.v[vertex][axis][j];
+        limit[lane] = active ? hits[lane].t : 0.0f;
+    }
+    const auto rel = [&](int vertex, int axis) { return v[vertex][axis] - together.origin[axis]; };
+    Float t, b1, b2;
+    const unsigned found = detail::watertight_lanes<true>(rel, together, limit, lanes, t, b1, b2);
+    for (unsigned m = found; m != 0; m &= m - 1) {
+        const unsigned ray = __builtin_ctz(m);
+        hits[ray].t = t[ray];
+        hits[ray].prim = prims[ray];
+        hits[ray].b1 = b1[ray];
+        hits[ray].b2 = b2[ray];
+    }
+    return found;
+}
+
 }  // namespace rt

@@ -171,15 +171,7 @@ unsigned Scene::intersect_primitive_packet(std::uint32_t object, const std::uint
     if (const auto* triangle = std::get_if<Triangle>(&o.shape))
         return shape_packet(*triangle, object, rays, hits, lanes);
     const auto& mesh = meshes[std::get<MeshRef>(o.shape).mesh];
-    unsigned found = 0;
-    for (unsigned rest = lanes; rest != 0;) {  // the rays naming one triangle together
-        const std::uint32_t prim = prims[__builtin_ctz(rest)];
-        unsigned same = 0;
-        for (unsigned k = rest; k != 0; k &= k - 1)
-            if (prims[__builtin_ctz(k)] == prim) same |= 1u << __builtin_ctz(k);
-        rest &= ~same;
-        found |= mesh.intersect_triangle_packet(prim, rays, hits, same);
-    }
+    const unsigned found = mesh.intersect_triangles_packet(prims, rays, hits, lanes);
     for (unsigned rest = found; rest != 0; rest &= rest - 1)
         hits[__builtin_ctz(rest)].object = object;
     return found;
@@ -215,7 +207,10 @@ unsigned Scene::intersect_among(const std::uint32_t* among, int count, const Ray
         const std::uint32_t object = among[k];
         if (object >= objects.size() || std::holds_alternative<Plane>(objects[object].shape))
             continue;  // the planes were tested
-        found |= intersect_object_packet(object, rays, hits, lanes);
+        if (std::holds_alternative<MeshRef>(objects[object].shape))
+            found |= intersect_object_packet(object, rays, hits, lanes);  // its own tree
+        else
+            found |= intersect_primitive_packet(object, nullptr, as_lanes, hits, lanes);
     }
     return found;
 }

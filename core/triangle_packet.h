@@ -88,6 +88,40 @@ struct ShearedRays {
     }
 };
 
+namespace detail {
+
+// The watertight test of one triangle per ray, the rays as the lanes: rel(vertex, axis)
+// gives each lane's vertex minus its ray's origin. Returns the rays of `lanes` that hit
+// within their `limit` (their t in `t`); with kBarycentrics, b1 and b2 as well.
+template <bool kBarycentrics, int N, class Rel>
+[[gnu::always_inline]] inline unsigned watertight_lanes(const Rel& rel, const ShearedRays<N>& r,
+                                                        const typename Lanes<N>::Float& limit,
+                                                        unsigned lanes, typename Lanes<N>::Float& t,
+                                                        typename Lanes<N>::Float& b1,
+                                                        typename Lanes<N>::Float& b2) {
+    using Float = typename Lanes<N>::Float;
+    const auto o = watertight_values<Float>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
+    const Float zero = splat<Float>(0.0f);
+    const auto same_sign = ((o.u >= zero) & (o.v >= zero) & (o.w >= zero)) |
+                           ((o.u <= zero) & (o.v <= zero) & (o.w <= zero));
+    const auto inside = same_sign & (o.det != zero);
+    if ((bits(inside) & lanes) == 0) return 0;
+    const Float t_scaled = r.sz * (o.u * o.az + o.v * o.bz + o.w * o.cz);
+    t = t_scaled / o.det;
+    unsigned candidates = bits(inside & (t > zero) & (t < limit)) & lanes;
+    if (candidates == 0) return 0;
+    candidates &= bits(vabs(t_scaled) > t_det_error(o, r.abs_sz));
+    if constexpr (kBarycentrics) {
+        if (candidates != 0) {
+            b1 = o.v / o.det;  // each lane's own IEEE division
+            b2 = o.w / o.det;
+        }
+    }
+    return candidates;
+}
+
+}  // namespace detail
+
 // Per ray, the nearest hit of the pack's triangles within its own (0, t_max): fills
 // t_max, lane (the triangle's lane in the pack), b1 and b2 of the rays that hit one and
 // returns their bits. kAnyHit: returns the rays that hit any, nothing else written.
@@ -105,24 +139,14 @@ template <bool kAnyHit, int N>
         const auto rel = [&](int vertex, int axis) {
             return splat<Float>(tri.v[vertex][axis][j]) - r.origin[axis];
         };
-        const auto o = detail::watertight_values<Float>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
-        const Float zero = splat<Float>(0.0f);
-        const auto same_sign = ((o.u >= zero) & (o.v >= zero) & (o.w >= zero)) |
-                               ((o.u <= zero) & (o.v <= zero) & (o.w <= zero));
-        const auto inside = same_sign & (o.det != zero);
-        if ((bits(inside) & lanes) == 0) continue;
-        const Float t_scaled = r.sz * (o.u * o.az + o.v * o.bz + o.w * o.cz);
-        const Float t = t_scaled / o.det;
-        unsigned candidates = bits(inside & (t > zero) & (t < limit)) & lanes;
-        if (candidates == 0) continue;
-        candidates &= bits(vabs(t_scaled) > detail::t_det_error(o, r.abs_sz));
+        Float t, v, w;
+        unsigned candidates = detail::watertight_lanes<!kAnyHit>(rel, r, limit, lanes, t, v, w);
         if constexpr (kAnyHit) {
             found |= candidates;
             lanes &= ~candidates;
             if (lanes == 0) return found;
             continue;
         }
-        const Float v = o.v / o.det, w = o.w / o.det;  // each lane's own IEEE division
         for (; candidates != 0; candidates &= candidates - 1) {
             const int ray = __builtin_ctz(candidates);
             limit[ray] = t[ray];

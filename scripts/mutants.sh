@@ -301,6 +301,9 @@ mutant edge-pixels-look-along-their-row-only core/renderer.cpp \
     'for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {' \
     'for (int row = y; row <= y; ++row) {' \
     rt_tests $(unit 'ItemBuffer.*')
+mutant per-lane-triangles-all-named-the-first core/mesh_packet.cpp \
+    'hits[ray].prim = prims[ray];' 'hits[ray].prim = first;' \
+    rt_tests $(unit 'ScenePackets.*')
 mutant small-scene-far-out-not-rebased core/scene_loader.cpp \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')
