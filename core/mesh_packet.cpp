@@ -190,7 +190,7 @@ unsigned TriangleMesh::intersect_triangles_packet(const std::uint32_t* prims,
         return found;
     }
     // Each ray's own triangle, read from its pack, as the lanes.
-    Float v[3][3], limit;
+    Float v[3][3];
     for (int lane = 0; lane < kPacketWidth; ++lane) {
         const bool active = ((lanes >> lane) & 1u) != 0;
         const std::uint32_t at = prim_lane_[active ? prims[lane] : first];
@@ -198,8 +198,8 @@ unsigned TriangleMesh::intersect_triangles_packet(const std::uint32_t* prims,
         const std::uint32_t j = at % kTriangle4Lanes;
         for (int vertex = 0; vertex < 3; ++vertex)
             for (int axis = 0; axis < 3; ++axis) v[vertex][axis][lane] = pack.v[vertex][axis][j];
-        limit[lane] = active ? hits[lane].t : 0.0f;
     }
+    const Float limit = t_bounds<kPacketWidth>(hits, lanes);
     const auto rel = [&](int vertex, int axis) { return v[vertex][axis] - together.origin[axis]; };
     Float t, b1, b2;
     const unsigned found = detail::watertight_lanes<true>(rel, together, limit, lanes, t, b1, b2);

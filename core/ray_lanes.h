@@ -3,6 +3,9 @@
 // packet, then handed to every test across the rays (core/shape_packets.h, the item
 // buffer's named triangle), which no longer read the rays one lane at a time.
 
+#include <cstring>
+
+#include "core/hit.h"
 #include "core/ray.h"
 #include "core/simd.h"
 #include "core/transform.h"
@@ -49,5 +52,18 @@ struct RayLanes {
         return out;
     }
 };
+
+// hits[lane].t for each bit of `lanes` (the other lanes repeat the first of them): the
+// rays' bounds as lanes. Written to memory and read as one vector, not inserted lane by
+// lane, and chosen by index, not by a branch per lane.
+template <int N>
+typename Lanes<N>::Float t_bounds(const Hit* hits, unsigned lanes) {
+    alignas(4 * N) float t[N];
+    const unsigned first = static_cast<unsigned>(__builtin_ctz(lanes));
+    for (unsigned lane = 0; lane < N; ++lane) t[lane] = hits[(lanes >> lane) & 1u ? lane : first].t;
+    typename Lanes<N>::Float out;
+    std::memcpy(&out, t, sizeof out);
+    return out;
+}
 
 }  // namespace rt

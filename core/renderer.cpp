@@ -124,9 +124,14 @@ class TileRays {
 // The objects named around pixels x0 .. x1 of row y (their 3 x 3 blocks), each once.
 int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* out) {
     int count = 0;
+    std::uint32_t last = ItemBuffer::kEmpty;  // neighbours mostly repeat the id before them
+    const int left = std::max(0, x0 - 1), right = std::min(ib.width - 1, x1 + 1);
     for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {
-        for (int x = std::max(0, x0 - 1); x <= std::min(ib.width - 1, x1 + 1); ++x) {
-            const std::uint32_t id = ib.object[ib.index(x, row)];
+        const std::uint32_t* ids = &ib.object[ib.index(0, row)];
+        for (int x = left; x <= right; ++x) {
+            const std::uint32_t id = ids[x];
+            if (id == last) continue;
+            last = id;
             if (id != ItemBuffer::kEmpty && std::find(out, out + count, id - 1) == out + count)
                 out[count++] = id - 1;
         }
@@ -136,13 +141,14 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
 
 // The first hits of pixels x .. x + n - 1 of row y (n <= kPacketWidth) from the item
 // buffer. A pixel inside one object's region (ItemBuffer::interior_run) is tested against
-// the object (and triangle) named, together with the others of the run that name the same
-// one; inside the background it is background (the raster draws the planes to within a
-// fraction of a pixel of their horizon: GpuScene::plane_extent). A pixel on an edge, or whose named
-// primitive turns out to miss, is tested against every object named around it (and the planes), not
-// the whole scene: the raster and the tracer sample the same pixel centres, and where they disagree
-// (the raster's tessellated spheres, rounding at an edge) the object the ray meets is named next to
-// it. Returns how many pixels were on an edge or missed.
+// the object (and triangle) named, together with the others of the run that name the
+// same one; inside the background it is background. A pixel on an edge, or whose named
+// primitive turns out to miss, is tested against every object named around it, not the
+// whole scene: the raster and the tracer sample the same pixel centres, and where they
+// disagree (the raster's tessellated spheres, rounding at an edge) the object the ray
+// meets is named next to it (the planes too: the raster draws them to within a fraction
+// of a pixel of their horizon, GpuScene::plane_extent). Returns how many pixels were on
+// an edge or missed.
 int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int n,
                     const RayLanes<kPacketWidth>& lanes, const Ray* rays, Hit* hits) {
     const unsigned all = (1u << n) - 1u;

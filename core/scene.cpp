@@ -143,9 +143,7 @@ template <class Shape>
 unsigned shape_packet(const Shape& shape, std::uint32_t object, const RayLanes<kPacketWidth>& r,
                       Hit* hits, unsigned lanes) {
     LaneHits<kPacketWidth> out;
-    const int first = __builtin_ctz(lanes);
-    for (int lane = 0; lane < kPacketWidth; ++lane)
-        out.t_max[lane] = hits[(lanes >> lane) & 1u ? lane : first].t;
+    out.t_max = t_bounds<kPacketWidth>(hits, lanes);
     const unsigned hit = intersect_lanes(shape, r, lanes, out);
     for (unsigned rest = hit; rest != 0; rest &= rest - 1) {
         const unsigned lane = __builtin_ctz(rest);
@@ -199,14 +197,10 @@ unsigned Scene::intersect_among(const std::uint32_t* among, int count, const Ray
                                 const RayLanes<kPacketWidth>& as_lanes, Hit* hits,
                                 unsigned lanes) const {
     lanes &= (1u << kPacketWidth) - 1u;
-    if (lanes == 0) return 0;
     unsigned found = 0;
-    for (std::uint32_t i : unbounded_)
-        found |= intersect_primitive_packet(i, nullptr, as_lanes, hits, lanes);
-    for (int k = 0; k < count; ++k) {
+    for (int k = 0; k < count && lanes != 0; ++k) {
         const std::uint32_t object = among[k];
-        if (object >= objects.size() || std::holds_alternative<Plane>(objects[object].shape))
-            continue;  // the planes were tested
+        if (object >= objects.size()) continue;
         if (std::holds_alternative<MeshRef>(objects[object].shape))
             found |= intersect_object_packet(object, rays, hits, lanes);  // its own tree
         else

@@ -95,11 +95,11 @@ class Scene {
     // buffer cell (core/light_buffer.h), not the tree.
     bool occluded(const Ray& feeler, float t_max, std::size_t light,
                   std::uint32_t leaving = kNoObject) const;
-    // The closest hit among `count` objects (indices) and the unbounded planes, for the rays
-    // of `lanes` (rays[lane], hits[lane], each within its hits[lane].t): where a ray's
-    // closest object is among them, the hit intersect() gives. The item buffer's pixels
-    // on an edge test the objects named around them so. Returns the bits of those that hit.
-    // The rays are given both ways: `rays` and, as lanes, `as_lanes`.
+    // The closest hit among `count` objects (indices) for the rays of `lanes` (rays[lane],
+    // hits[lane], each within its hits[lane].t): where a ray's closest object is among
+    // them, the hit intersect() gives. The item buffer's pixels on an edge test the objects
+    // named around them so. The rays are given both ways: `rays` and, as lanes, `as_lanes`.
+    // Returns the bits of those that hit.
     unsigned intersect_among(const std::uint32_t* objects, int count, const Ray* rays,
                              const RayLanes<kPacketWidth>& as_lanes, Hit* hits,
                              unsigned lanes) const;

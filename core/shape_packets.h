@@ -15,8 +15,8 @@ namespace rt {
 template <int N>
 struct LaneHits {
     using Float = typename Lanes<N>::Float;
-    Float t_max{};  // in: each ray's bound
-    Float t{}, b1{}, b2{};
+    Float t_max;  // in: each ray's bound
+    Float t, b1{}, b2{};  // out (a plane or sphere leaves b1 and b2 zero)
 };
 
 unsigned intersect_lanes(const Plane& p, const RayLanes<kPacketWidth>& r, unsigned lanes,
