@@ -206,22 +206,29 @@ TEST(ItemBuffer, ARunsCheckIsEachPixelsOwn) {
     }
 }
 
-// The item buffer a perfect rasteriser would give (each pixel centre's first hit, traced):
-// a frame from it is the frame from scratch, bit for bit, with the pixels on silhouettes
-// traced as packets and the others tested against what they name.
+// The item buffer a perfect rasteriser would give: each pixel centre's first hit, traced.
+ItemBuffer traced_item_buffer(const Scene& scene) {
+    const Camera& camera = scene.camera;
+    ItemBuffer ib(camera.cols, camera.rows);
+    for (int y = 0; y < camera.rows; ++y) {
+        for (int x = 0; x < camera.cols; ++x) {
+            Hit hit;
+            if (!scene.intersect(camera.ray(x, y), hit)) continue;
+            ib.object[ib.index(x, y)] = hit.object + 1;
+            ib.prim[ib.index(x, y)] = hit.prim;
+        }
+    }
+    return ib;
+}
+
+// A frame from a perfect item buffer is the frame from scratch, bit for bit: the pixels
+// on edges tested against the objects named around them, the others against what they
+// name.
 TEST(ItemBuffer, AFrameFromAPerfectItemBufferIsTheFrameFromScratch) {
     for (const std::string& name : test::shipped_scene_names()) {
         const Scene scene(test::shipped_scene(name, 96, 54));
         const Camera& camera = scene.camera;
-        ItemBuffer ib(camera.cols, camera.rows);
-        for (int y = 0; y < camera.rows; ++y) {
-            for (int x = 0; x < camera.cols; ++x) {
-                Hit hit;
-                if (!scene.intersect(camera.ray(x, y), hit)) continue;
-                ib.object[ib.index(x, y)] = hit.object + 1;
-                ib.prim[ib.index(x, y)] = hit.prim;
-            }
-        }
+        const ItemBuffer ib = traced_item_buffer(scene);
         RenderOptions options;
         options.threads = 2;
         RenderStats with_stats;
@@ -242,15 +249,7 @@ TEST(ItemBuffer, AnEdgePixelFindsTheObjectNamedNextToIt) {
     for (const char* name : {"whitted.json", "cornell.json", "tutorial.json"}) {
         const Scene scene(test::shipped_scene(name, 160, 90));
         const Camera& camera = scene.camera;
-        ItemBuffer perfect(camera.cols, camera.rows);
-        for (int y = 0; y < camera.rows; ++y) {
-            for (int x = 0; x < camera.cols; ++x) {
-                Hit hit;
-                if (!scene.intersect(camera.ray(x, y), hit)) continue;
-                perfect.object[perfect.index(x, y)] = hit.object + 1;
-                perfect.prim[perfect.index(x, y)] = hit.prim;
-            }
-        }
+        const ItemBuffer perfect = traced_item_buffer(scene);
         ItemBuffer blanked = perfect;
         for (int y = 0; y < camera.rows; ++y)
             for (int x = 0; x < camera.cols; ++x)
