@@ -237,7 +237,7 @@ mutant packet-interval-takes-one-inverse core/wide_bvh_packet.h \
     'return d * (d >= zero ? inv_lo[a] : inv_hi[a]);' 'return d * inv_hi[a];' \
     rt_tests $(unit 'EveryKind/PacketTest.*')
 mutant packet-triangles-error-bound-unscaled core/triangle_packet.h \
-    'detail::t_det_error(o, r.abs_sz)' 'detail::t_det_error(o, splat<Float>(1.0f))' \
+    't_det_error(o, r.abs_sz)' 't_det_error(o, splat<Float>(1.0f))' \
     rt_tests $(unit 'TrianglePacket.*')
 mutant packet-skips-a-child core/wide_bvh_packet.h \
     'for (mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
@@ -282,10 +282,10 @@ mutant item-buffer-interior-misses-a-column core/item_buffer.h \
 mutant item-buffer-packet-lanes-unmasked core/mesh_packet.cpp \
     '1u << (at % kTriangle4Lanes));' '0xfu);' \
     rt_tests $(unit 'ScenePackets.*')
-mutant sphere-lanes-take-the-near-root-only core/shape_packets.cpp \
+mutant sphere-lanes-take-the-near-root-only core/shape_packets.h \
     'out.t = near ? t1 : t2;' 'out.t = t1;' \
     rt_tests $(unit 'ShapeLanes.*')
-mutant triangle-lanes-edge-dropped core/shape_packets.cpp \
+mutant triangle-lanes-edge-dropped core/shape_packets.h \
     '(edge_ab < zero) | (edge_bc < zero) | (edge_ca < zero)' '(edge_ab < zero) | (edge_bc < zero)' \
     rt_tests $(unit 'ShapeLanes.*')
 mutant ray-lanes-lose-the-translation core/ray_lanes.h \
@@ -295,7 +295,7 @@ mutant interior-run-sees-no-side-neighbour core/item_buffer.h \
     'dy * static_cast<std::ptrdiff_t>(width) + dx)' 'dy * static_cast<std::ptrdiff_t>(width))' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant item-buffer-run-never-falls-back core/renderer.cpp \
-    'const unsigned fall = all & ~settled;' 'const unsigned fall = 0;' \
+    'const unsigned edge = all & ~settled;' 'const unsigned edge = 0;' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant edge-pixels-look-along-their-row-only core/renderer.cpp \
     'for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {' \
