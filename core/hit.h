@@ -2,7 +2,9 @@
 // What traversal records about the closest hit; the full surface record is built once,
 // after the search ("find the closest hit first, then build the hit record").
 
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include <glm/vec2.hpp>
@@ -22,6 +24,17 @@ struct Hit {
 
     bool found() const { return object != kNoObject; }
 };
+
+// hits[0 .. n) made fresh (Hit{}); a full packet of eight as one copy of eight fresh
+// records (five vector stores), not field by field.
+inline void reset_hits(Hit* hits, std::size_t n) {
+    static constexpr Hit kFresh[8]{};
+    if (n == 8) {
+        std::memcpy(hits, kFresh, sizeof kFresh);
+        return;
+    }
+    for (std::size_t k = 0; k < n; ++k) hits[k] = Hit{};
+}
 
 // The surface at a hit, in world space. Both normals face the incoming ray, whichever
 // way the surface is wound (refraction asks the ray's media, not the winding, whether it

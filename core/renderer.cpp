@@ -169,7 +169,7 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
 int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int n,
                     const RayLanes<kPacketWidth>& lanes, const Ray* rays, Hit* hits) {
     const unsigned all = (1u << n) - 1u;
-    for (int k = 0; k < n; ++k) hits[k] = Hit{};
+    reset_hits(hits, static_cast<std::size_t>(n));
     const std::size_t at = ib.index(x, y);
     const std::uint32_t* ids = &ib.object[at];
     unsigned settled = 0;
@@ -216,7 +216,7 @@ std::uint64_t item_buffer_hits(const Scene& scene, const ItemBuffer& ib, const T
 void primary_packets(const Scene& scene, const std::vector<Ray>& rays, std::vector<Hit>& hits) {
     for (std::size_t i = 0; i < rays.size(); i += kPacketWidth) {
         const std::size_t n = std::min<std::size_t>(kPacketWidth, rays.size() - i);
-        for (std::size_t k = 0; k < n; ++k) hits[i + k] = Hit{};
+        reset_hits(&hits[i], n);
         scene.intersect_packet(&rays[i], &hits[i], (1u << n) - 1u);
     }
 }
