@@ -53,8 +53,9 @@ using ProgressFn = std::function<void(int done, int total)>;
 // Renders scene.camera's view (or `camera`'s). With an item buffer (of the camera's size), and
 // one sample per pixel (it knows the pixel centres only), the primary hits come from it: only the
 // named object or triangle is tested, and pixels on an object's border, or where that test misses,
-// fall back to a full traversal. When `stop` is requested the workers finish their current tile and
-// return; the image is then partly black and stats.cancelled is set.
+// are tested against the objects named around them (item_buffer_fallbacks counts them). When `stop`
+// is requested the workers finish their current tile and return; the image is then partly black and
+// stats.cancelled is set.
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr,
              const ProgressFn& progress = {}, std::stop_token stop = {},
              const ItemBuffer* item_buffer = nullptr);

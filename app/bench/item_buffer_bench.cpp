@@ -100,7 +100,7 @@ int report(const ItemBufferBenchOptions& o, const std::string& gl, const Samples
         net(frame2);
     }
     const std::uint64_t fell_back = m.stats.item_buffer_fallbacks;
-    std::printf("primary rays: %.2fx faster; %llu fell back, %llu of %zu pixels differ\n",
+    std::printf("primary rays: %.2fx faster; %llu on edges, %llu of %zu pixels differ\n",
                 primary0 / primary1, static_cast<unsigned long long>(fell_back),
                 static_cast<unsigned long long>(differing), m.with.pixels.size());
     if (!o.json.empty()) {

@@ -193,7 +193,8 @@ rt::Image Job::trace() {
         std::printf(
             "item buffer: %.3f s, primary rays %.3f s instead of %.3f s: "
             "net %s %.3f s; "
-            "%llu pixels fell back to full traversal, %llu of %zu pixels disagree (%.4f%%)\n",
+            "%llu pixels on edges tested against the objects around them, %llu of %zu pixels "
+            "disagree (%.4f%%)\n",
             ib_seconds, stats.primary_seconds, reference.primary_seconds,
             saved >= 0 ? "saving" : "LOSS", std::abs(saved),
             static_cast<unsigned long long>(stats.item_buffer_fallbacks),

@@ -63,7 +63,7 @@ void Viewer::draw_statistics() {
                        "net %s %.1f ms", saved >= 0 ? "saving" : "loss", std::abs(saved));
     const double pixels = static_cast<double>(s.rays.primary);
     ImGui::Text(
-        "%llu pixels disagree (%.4f%%), %llu fell back",
+        "%llu pixels disagree (%.4f%%), %llu on edges",
         static_cast<unsigned long long>(stats_.full->item_buffer_disagreements),
         100.0 * static_cast<double>(stats_.full->item_buffer_disagreements) / std::max(1.0, pixels),
         static_cast<unsigned long long>(s.item_buffer_fallbacks));
