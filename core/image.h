@@ -19,6 +19,15 @@ struct Image {
     Image(int w, int h)
         : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, vec3(0.0f)) {}
 
+    // To w x h, keeping the storage where it is big enough: a frame read into the
+    // previous frame's image, not into fresh pages (the kernel zeroes each on first
+    // touch: 1280 x 720 floats cost about 4 ms of page faults here). Pixels are left
+    // as they were; the caller overwrites them.
+    void resize(int w, int h) {
+        width = w, height = h;
+        pixels.resize(static_cast<std::size_t>(w) * h);
+    }
+
     vec3& at(int x, int y) { return pixels[static_cast<std::size_t>(y) * width + x]; }
     const vec3& at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
 };

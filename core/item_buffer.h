@@ -33,6 +33,13 @@ struct ItemBuffer {
           object(static_cast<std::size_t>(w) * h, kEmpty),
           prim(object.size(), 0) {}
 
+    // As Image::resize: the storage kept, the ids left for the caller to overwrite.
+    void resize(int w, int h) {
+        width = w, height = h;
+        object.resize(static_cast<std::size_t>(w) * h);
+        prim.resize(object.size());
+    }
+
     std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
 
     // True when every pixel of the 3x3 block around (x, y) (inside the image) names the

@@ -304,6 +304,9 @@ mutant edge-pixels-look-along-their-row-only core/renderer.cpp \
 mutant per-lane-triangles-all-named-the-first core/mesh_packet.cpp \
     'hits[ray].prim = prims[ray];' 'hits[ray].prim = first;' \
     rt_tests $(unit 'ScenePackets.*')
+mutant item-buffer-read-into-storage-keeps-its-height core/item_buffer.h \
+    'width = w, height = h;' 'width = w;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*EarlierFrame*'
 mutant small-scene-far-out-not-rebased core/scene_loader.cpp \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')

@@ -17,9 +17,11 @@ namespace {
 
 // Per frame: a trace without the item buffer, one with it from its own pass, and (where
 // the raster can share its pass) a plain raster frame and one that draws the ids too.
+constexpr int kRasterPairs = 3;  // raster frames with and without the ids, per round
+
 struct Samples {
     std::vector<double> plain_frame, plain_primary, ib_pass, ib_primary, ib_frame, trace_with,
-        raster_plain, raster_shared;
+        raster_plain, raster_shared, ids_cost;
     rt::Image with, without;
     rt::RenderStats stats;  // the last trace with the item buffer
     bool can_share = false;
@@ -32,14 +34,21 @@ Samples measure(const ItemBufferBenchOptions& o, const rt::Scene& scene,
     Samples m;
     rt::ItemBuffer ib = raster.render_item_buffer(scene.camera);  // warm-up: buffers, sphere meshes
     m.can_share = raster.shares_item_buffer();
-    if (m.can_share) (void)raster.render_with_item_buffer(scene.camera);
+    // Each pass draws into the storage of its previous frame, as a viewer would: fresh
+    // pages cost more than reading the ids (the kernel zeroes them on first touch).
+    rt::Image plain;
+    rt::gl::RasterRenderer::Frame frame;
+    if (m.can_share) {
+        raster.render(scene.camera, plain);
+        raster.render_with_item_buffer(scene.camera, frame);
+    }
     for (int k = 0; k < o.repeats + 1; ++k) {  // the first round is a warm-up
         m.without = rt::render(scene, options, &m.stats);
         if (k > 0)
             m.plain_frame.push_back(m.stats.seconds),
                 m.plain_primary.push_back(m.stats.primary_seconds);
         rt::Stopwatch watch;
-        ib = raster.render_item_buffer(scene.camera);
+        raster.render_item_buffer(scene.camera, ib);
         const double pass = watch.seconds();
         m.with = rt::render(scene, options, &m.stats, {}, {}, &ib);
         if (k > 0) {
@@ -49,20 +58,32 @@ Samples measure(const ItemBufferBenchOptions& o, const rt::Scene& scene,
         }
         if (!m.can_share) continue;
         // From the raster pass: what drawing and reading the ids adds to a raster frame
-        // (drawn anyway, to be compared with the traced one).
-        watch.restart();
-        (void)raster.render(scene.camera);
-        const double plain_raster = watch.lap();
-        const rt::gl::RasterRenderer::Frame frame = raster.render_with_item_buffer(scene.camera);
-        const double with_ids = watch.seconds();
+        // (drawn anyway, to be compared with the traced one). The two raster frames are
+        // drawn in pairs, in turn first, and the cost is each pair's difference: a frame
+        // is noisier (llvmpipe shares the cores) than the ids' part of it.
+        for (int pair = 0; pair < kRasterPairs; ++pair) {
+            const bool plain_first = (k + pair) % 2 == 0;
+            double plain_raster = 0.0, with_ids = 0.0;
+            for (int turn = 0; turn < 2; ++turn) {
+                watch.restart();
+                if ((turn == 0) == plain_first) {
+                    raster.render(scene.camera, plain);
+                    plain_raster = watch.seconds();
+                } else {
+                    raster.render_with_item_buffer(scene.camera, frame);
+                    with_ids = watch.seconds();
+                }
+            }
+            if (k > 0) {
+                m.raster_plain.push_back(plain_raster);
+                m.raster_shared.push_back(with_ids);
+                m.ids_cost.push_back(with_ids - plain_raster);
+            }
+        }
         if (frame.ids.object != ib.object || frame.ids.prim != ib.prim)
             throw rt::Error(o.scene, "item buffer",
                             "the raster pass's item buffer differs from the dedicated pass's");
-        if (k > 0) {
-            m.raster_plain.push_back(plain_raster);
-            m.raster_shared.push_back(with_ids);
-            m.trace_with.push_back(m.stats.seconds);
-        }
+        if (k > 0) m.trace_with.push_back(m.stats.seconds);
     }
     return m;
 }
@@ -88,9 +109,10 @@ int report(const ItemBufferBenchOptions& o, const std::string& gl, const Samples
     net(frame1);
     double frame2 = 0.0, shared = 0.0;
     if (m.can_share) {
-        // What the ids add to the raster frame (both frames read their colours back, which
-        // waits for the drawing: llvmpipe draws only when something is read).
-        shared = std::max(0.0, median(m.raster_shared) - median(m.raster_plain));
+        // What the ids add to the raster frame, the median of the pairs' differences (both
+        // frames read their colours back, which waits for the drawing: llvmpipe draws only
+        // when something is read).
+        shared = std::max(0.0, median(m.ids_cost));
         frame2 = shared + median(m.trace_with);
         std::printf(
             "with item buffer, from the raster pass: frame %.1f ms = ids drawn and read back %.1f "

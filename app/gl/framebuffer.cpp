@@ -70,6 +70,14 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples)
                                   ms_depth_.get());
         require_complete("multisampled framebuffer");
     }
+    if (kind == Kind::kItemBuffer || kind == Kind::kColourAndIds) {
+        // Storage once: a fresh buffer each read cost fresh pages each frame.
+        ids_pbo_ = make_buffer();
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, ids_pbo_.get());
+        glBufferData(GL_PIXEL_PACK_BUFFER, static_cast<GLsizeiptr>(width) * height * 8, nullptr,
+                     GL_STREAM_READ);
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    }
     check("Framebuffer");
 }
 
@@ -100,13 +108,18 @@ void Framebuffer::bind() const {
 }
 
 Image Framebuffer::read_colour() const {
-    Image image(width_, height_);
+    Image image;
+    read_colour(image);
+    return image;
+}
+
+void Framebuffer::read_colour(Image& image) const {
+    image.resize(width_, height_);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, width_, height_, GL_RGB, GL_FLOAT, image.pixels.data());
     check("read_colour");
-    return image;
 }
 
 vec3 Framebuffer::read_pixel(int x, int y) const {
@@ -131,16 +144,12 @@ std::uint32_t Framebuffer::read_id(int x, int y) const {
 
 ItemBuffer Framebuffer::read_item_buffer() const { return start_item_buffer_read().finish(); }
 
-Framebuffer::ItemBufferRead::ItemBufferRead(int width, int height)
-    : width_(width), height_(height), pbo_(make_buffer()) {}
-
 // Both attachments into one buffer, objects then triangles: glReadPixels into a bound
 // pixel-pack buffer returns at once on a GPU, the copy going on while the CPU works.
 Framebuffer::ItemBufferRead Framebuffer::start_item_buffer_read() const {
-    ItemBufferRead read(width_, height_);
+    const ItemBufferRead read(width_, height_, ids_pbo_.get());
     const auto bytes = static_cast<GLsizeiptr>(width_) * height_ * 4;
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, read.pbo_.get());
-    glBufferData(GL_PIXEL_PACK_BUFFER, 2 * bytes, nullptr, GL_STREAM_READ);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, ids_pbo_.get());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     for (int k = 0; k < 2; ++k) {
@@ -154,9 +163,15 @@ Framebuffer::ItemBufferRead Framebuffer::start_item_buffer_read() const {
 }
 
 ItemBuffer Framebuffer::ItemBufferRead::finish() {
-    ItemBuffer ib(width_, height_);
+    ItemBuffer ib;
+    finish(ib);
+    return ib;
+}
+
+void Framebuffer::ItemBufferRead::finish(ItemBuffer& ib) {
+    ib.resize(width_, height_);
     const std::size_t count = ib.object.size();
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, pbo_.get());
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, pbo_);
     const void* data = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0,
                                         static_cast<GLsizeiptr>(2 * count * 4), GL_MAP_READ_BIT);
     if (data) {
@@ -168,7 +183,6 @@ ItemBuffer Framebuffer::ItemBufferRead::finish() {
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     check("ItemBufferRead::finish");
     if (!data) throw std::runtime_error("item buffer: the pixel buffer could not be mapped");
-    return ib;
 }
 
 }  // namespace rt::gl

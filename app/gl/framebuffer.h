@@ -32,18 +32,23 @@ class Framebuffer {
     void bind() const;  // as the draw target, with the viewport set, depth (and ids) cleared
 
     Image read_colour() const;
+    void read_colour(Image& into) const;  // into's storage reused (Image::resize)
     ItemBuffer read_item_buffer() const;
     // The item buffer's read-back started into a pixel buffer object and finished later,
     // so that the CPU can do other work while a GPU copies (kItemBuffer, kColourAndIds).
+    // The buffer is the framebuffer's own, made once: finish a read before the next
+    // starts, and before the framebuffer goes.
     class ItemBufferRead {
       public:
-        ItemBuffer finish();  // waits for the copy, then maps the buffer
+        ItemBuffer finish();            // waits for the copy, then maps the buffer
+        void finish(ItemBuffer& into);  // into's storage reused (ItemBuffer::resize)
 
       private:
         friend class Framebuffer;
-        ItemBufferRead(int width, int height);
+        ItemBufferRead(int width, int height, GLuint pbo)
+            : width_(width), height_(height), pbo_(pbo) {}
         int width_, height_;
-        BufferHandle pbo_;
+        GLuint pbo_;
     };
     ItemBufferRead start_item_buffer_read() const;
     // One pixel (x, y from the bottom left): a colour, or an item buffer's object id + 1.
@@ -60,6 +65,7 @@ class Framebuffer {
     RenderbufferHandle depth_;
     FramebufferHandle ms_fbo_;  // samples > 1: what is drawn into
     RenderbufferHandle ms_colour_, ms_depth_;
+    BufferHandle ids_pbo_;  // the item buffer's read-back (both ids: objects, then triangles)
 };
 
 }  // namespace rt::gl

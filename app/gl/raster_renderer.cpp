@@ -206,17 +206,21 @@ const Framebuffer& RasterRenderer::render_to_texture(const Camera& camera, bool 
 
 RasterRenderer::Frame RasterRenderer::render_with_item_buffer(const Camera& camera) {
     Frame frame;
-    if (shares_item_buffer()) {
+    render_with_item_buffer(camera, frame);
+    return frame;
+}
+
+void RasterRenderer::render_with_item_buffer(const Camera& camera, Frame& frame) {
+    frame.shared = shares_item_buffer();
+    if (frame.shared) {
         const Framebuffer& fb = render_to_texture(camera, true);
         Framebuffer::ItemBufferRead ids = fb.start_item_buffer_read();
-        frame.image = fb.read_colour();  // meanwhile, on a GPU
-        frame.ids = ids.finish();
-        frame.shared = true;
-        return frame;
+        fb.read_colour(frame.image);  // meanwhile, on a GPU
+        ids.finish(frame.ids);
+        return;
     }
-    frame.image = render(camera);
-    frame.ids = render_item_buffer(camera);
-    return frame;
+    render(camera, frame.image);
+    render_item_buffer(camera, frame.ids);
 }
 
 const Framebuffer& RasterRenderer::render_item_buffer_to_texture(const Camera& camera) {
@@ -230,8 +234,16 @@ Image RasterRenderer::render(const Camera& camera) {
     return render_to_texture(camera).read_colour();
 }
 
+void RasterRenderer::render(const Camera& camera, Image& into) {
+    render_to_texture(camera).read_colour(into);
+}
+
 ItemBuffer RasterRenderer::render_item_buffer(const Camera& camera) {
     return render_item_buffer_to_texture(camera).read_item_buffer();
+}
+
+void RasterRenderer::render_item_buffer(const Camera& camera, ItemBuffer& into) {
+    render_item_buffer_to_texture(camera).start_item_buffer_read().finish(into);
 }
 
 }  // namespace rt::gl

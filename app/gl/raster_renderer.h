@@ -30,6 +30,10 @@ class RasterRenderer {
     Image render(const Camera& camera);
     // Object id + 1 and triangle index per pixel, read back.
     ItemBuffer render_item_buffer(const Camera& camera);
+    // The same into a previous frame's storage (Image::resize), as a viewer or a
+    // benchmark drawing frame after frame would.
+    void render(const Camera& camera, Image& into);
+    void render_item_buffer(const Camera& camera, ItemBuffer& into);
 
     // The same passes, left on the GPU: their off-screen targets, for a viewer to sample.
     // With `with_ids` (and shares_item_buffer()) the colour pass draws the item buffer
@@ -48,6 +52,7 @@ class RasterRenderer {
         bool shared = false;  // from the colour pass itself
     };
     Frame render_with_item_buffer(const Camera& camera);
+    void render_with_item_buffer(const Camera& camera, Frame& into);
 
     // Multisample anti-aliasing of the colour pass (1, 2, 4 or 8 samples; 1: none). The
     // item buffer stays one sample a pixel: an object id cannot be averaged.

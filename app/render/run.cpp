@@ -128,23 +128,26 @@ rt::Image Job::render_traced(const rt::ItemBuffer* item_buffer, rt::RenderStats&
 // The item buffer, timed both ways: a pass of its own (the first pays for buffers and
 // sphere meshes; the second is what a frame costs), and, where the raster pass can draw
 // it (one sample a pixel), from the raster pass itself: its cost is what drawing and
-// reading the ids adds to a raster frame that is drawn anyway. The trace uses the cheaper.
+// reading the ids adds to a raster frame that is drawn anyway. Both give the same ids (GL
+// test); the cheaper is reported as the pass used. The warm passes draw into the storage
+// of the cold ones, as frames after the first would.
 rt::ItemBuffer Job::item_buffer() {
     rt::gl::RasterRenderer& gl = raster();
     rt::Stopwatch watch;
-    rt::ItemBuffer ib = gl.render_item_buffer(scene_->camera);
+    rt::gl::RasterRenderer::Frame frame;
+    gl.render_item_buffer(scene_->camera, frame.ids);
     stats_["item_buffer_cold_seconds"] = watch.lap();
-    ib = gl.render_item_buffer(scene_->camera);
+    gl.render_item_buffer(scene_->camera, frame.ids);
     const double dedicated = watch.seconds();
     stats_["item_buffer_dedicated_seconds"] = dedicated;
     stats_["item_buffer_pass"] = "dedicated";
     stats_["item_buffer_seconds"] = dedicated;
-    if (!gl.shares_item_buffer()) return ib;
-    gl.render(scene_->camera);  // warm: maps and buffers drawn
+    if (!gl.shares_item_buffer()) return std::move(frame.ids);
+    gl.render(scene_->camera, frame.image);  // warm: maps and buffers drawn
     watch.restart();
-    (void)gl.render(scene_->camera);
+    gl.render(scene_->camera, frame.image);
     const double plain = watch.lap();
-    rt::gl::RasterRenderer::Frame frame = gl.render_with_item_buffer(scene_->camera);
+    gl.render_with_item_buffer(scene_->camera, frame);
     const double shared = std::max(0.0, watch.seconds() - plain);
     stats_["item_buffer_shared_seconds"] = shared;
     if (!o_.quiet)
@@ -152,9 +155,10 @@ rt::ItemBuffer Job::item_buffer() {
             "item buffer: its own pass %.4f s; from the raster pass %.4f s (the ids "
             "drawn with the colours, and read back)\n",
             dedicated, shared);
-    if (shared >= dedicated) return ib;
-    stats_["item_buffer_pass"] = "shared";
-    stats_["item_buffer_seconds"] = shared;
+    if (shared < dedicated) {
+        stats_["item_buffer_pass"] = "shared";
+        stats_["item_buffer_seconds"] = shared;
+    }
     return std::move(frame.ids);
 }
 

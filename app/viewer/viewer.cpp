@@ -198,14 +198,17 @@ void Viewer::update_trace() {
         // From the raster pass on screen where it drew the ids for this very camera (one
         // sample a pixel): then only their read-back costs. Else a pass of their own.
         const rt::Stopwatch watch;
+        // Only this member copies it, so a count of one means no trace still reads it.
+        if (item_buffer_storage_.use_count() != 1)
+            item_buffer_storage_ = std::make_shared<rt::ItemBuffer>();
         stats_.item_buffer_shared = raster_ids_ && raster_camera_ == request.camera;
         if (stats_.item_buffer_shared) {
-            request.item_buffer = std::make_shared<rt::ItemBuffer>(raster_fb_->read_item_buffer());
+            raster_fb_->start_item_buffer_read().finish(*item_buffer_storage_);
         } else {
-            request.item_buffer =
-                std::make_shared<rt::ItemBuffer>(raster_->render_item_buffer(request.camera));
+            raster_->render_item_buffer(request.camera, *item_buffer_storage_);
             ids_camera_.reset();  // the pass drew over the item-buffer view's texture
         }
+        request.item_buffer = item_buffer_storage_;
         stats_.item_buffer_ms = watch.milliseconds();
     }
     if (key.explain) raster_frames(request);

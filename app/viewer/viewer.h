@@ -207,6 +207,9 @@ class Viewer {
     TraceJob tracer_;
     rt::gl::Texture traced_texture_;
     rt::Image traced_image_;  // what traced_texture_ holds
+    // The last item buffer handed to the tracer, read into again once the tracer has let
+    // it go (fresh pages cost more than reading the ids: Image::resize).
+    std::shared_ptr<rt::ItemBuffer> item_buffer_storage_;
     rt::gl::Texture explain_texture_;
     std::unique_ptr<rt::gl::GpuTracer> gpu_;  // none where the context has no compute shaders
     std::string gpu_unavailable_;             // why not

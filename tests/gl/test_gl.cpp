@@ -678,6 +678,35 @@ TEST_P(Gl, TheColourPassDrawsTheSameItemBuffer) {
     }
 }
 
+// Frames read into an earlier frame's storage (as rtbench, rtrender and the viewer do),
+// whether it was bigger, smaller or full of other ids, are the frames read fresh.
+TEST_P(Gl, AFrameReadIntoAnEarlierFramesStorageIsTheFreshFrame) {
+    const Scene scene(load("whitted.json", 120, 90));
+    gl::RasterRenderer raster(scene);
+    gl::RasterRenderer::Frame reused;
+    reused.ids.resize(160, 100);
+    std::fill(reused.ids.object.begin(), reused.ids.object.end(), 0xdeadbeefu);
+    std::fill(reused.ids.prim.begin(), reused.ids.prim.end(), 0xdeadbeefu);
+    reused.image.resize(50, 50);
+    for (const auto& [cols, rows] : {std::pair{120, 90}, {40, 30}, {160, 100}, {120, 90}}) {
+        const Camera camera = scene.camera.resized(cols, rows);
+        const Image plain = raster.render(camera);
+        const ItemBuffer dedicated = raster.render_item_buffer(camera);
+        raster.render_with_item_buffer(camera, reused);
+        EXPECT_EQ(reused.ids.width, cols);
+        EXPECT_EQ(reused.ids.height, rows);
+        EXPECT_TRUE(reused.ids.object == dedicated.object) << cols << " x " << rows;
+        EXPECT_TRUE(reused.ids.prim == dedicated.prim) << cols << " x " << rows;
+        EXPECT_EQ(reused.image.width, cols);
+        EXPECT_TRUE(reused.image.pixels == plain.pixels) << cols << " x " << rows;
+        raster.render(camera, reused.image);
+        EXPECT_TRUE(reused.image.pixels == plain.pixels) << cols << " x " << rows;
+        raster.render_item_buffer(camera, reused.ids);
+        EXPECT_TRUE(reused.ids.object == dedicated.object) << cols << " x " << rows;
+        EXPECT_TRUE(reused.ids.prim == dedicated.prim) << cols << " x " << rows;
+    }
+}
+
 TEST_P(Gl, LinesAndPointsAreDrawnByTheRasterOnly) {
     const auto path =
         test::write_file(test::temp_dir(std::string("wire_") +
