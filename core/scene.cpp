@@ -12,13 +12,14 @@
 namespace rt {
 namespace {
 
-// The ray in o's own space: r itself where o has no transform, else r moved into `moved`.
-// Not a copy of r: the copy was stored as 16 + 8 bytes and the shapes read a direction's
-// y and z back as 8 + 4 across them, which forwarding from the stores cannot serve, so
-// the loads waited for the stores to retire (Plane::surface was 14 % of a Whitted frame).
+// The ray in o's own space: r itself where o has no transform, else r moved into `moved`
+// (Transform::to_object's second form). Not a copy of r: a Ray copied whole is stored as
+// 16 + 8 bytes, and the shapes read its direction's x and y back as 8 bytes across the
+// two, which the store buffer cannot forward, so the load waited for both stores to
+// retire (Plane::surface was 14 % of a Whitted frame).
 const Ray& object_ray(const Object& o, const Ray& r, Ray& moved) {
     if (!o.transform) return r;
-    moved = o.transform->to_object(r);
+    o.transform->to_object(r, moved);
     return moved;
 }
 
