@@ -17,7 +17,8 @@ struct ItemBuffer {
     int width = 0;
     int height = 0;
     std::vector<std::uint32_t> object;  // object index + 1, or kEmpty; bottom row first
-    std::vector<std::uint32_t> prim;    // triangle index within the object (meshes)
+    std::vector<std::uint32_t> prim;    // triangle index within the object (meshes; the
+                                        // raster draws none where the scene has no mesh: 0)
 
     using Ids = std::uint32_t __attribute__((vector_size(4 * kPacketWidth)));
     static Ids load(const std::uint32_t* p) {

@@ -307,6 +307,15 @@ mutant per-lane-triangles-all-named-the-first core/mesh_packet.cpp \
 mutant item-buffer-read-into-storage-keeps-its-height core/item_buffer.h \
     'width = w, height = h;' 'width = w;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*EarlierFrame*'
+mutant triangle-ids-never-drawn app/gl/raster_renderer.cpp \
+    'return std::holds_alternative<MeshRef>(o.shape);' 'return std::holds_alternative<MeshRef>(o.shape) && false;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*'
+mutant triangle-ids-drawn-without-a-mesh app/gl/raster_renderer.cpp \
+    'return std::holds_alternative<MeshRef>(o.shape);' 'return true;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*'
+mutant triangle-ids-read-though-not-drawn app/gl/framebuffer.cpp \
+    'for (int k = 0; k < (triangle_ids_ ? 2 : 1); ++k) {' 'for (int k = 0; k < 2; ++k) {' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*:*SameItemBuffer*'
 mutant small-scene-far-out-not-rebased core/scene_loader.cpp \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')

@@ -18,11 +18,12 @@ void require_complete(const char* what) {
 }
 }  // namespace
 
-Framebuffer::Framebuffer(Kind kind, int width, int height, int samples)
+Framebuffer::Framebuffer(Kind kind, int width, int height, int samples, bool triangle_ids)
     : kind_(kind),
       width_(width),
       height_(height),
       samples_(kind == Kind::kColour ? std::max(1, samples) : 1),
+      triangle_ids_(triangle_ids),
       fbo_(make_framebuffer()) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
     const int attachments = kind == Kind::kColourAndIds ? 3 : (kind == Kind::kItemBuffer ? 2 : 1);
@@ -49,6 +50,7 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples)
     const GLenum draw[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
     glDrawBuffers(attachments, draw);
     require_complete("framebuffer");
+    if (kind == Kind::kItemBuffer || kind == Kind::kColourAndIds) draw_ids(true);
     if (samples_ > 1) {
         GLint most = 1;
         glGetIntegerv(GL_MAX_SAMPLES, &most);
@@ -74,7 +76,8 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples)
         // Storage once: a fresh buffer each read cost fresh pages each frame.
         ids_pbo_ = make_buffer();
         glBindBuffer(GL_PIXEL_PACK_BUFFER, ids_pbo_.get());
-        glBufferData(GL_PIXEL_PACK_BUFFER, static_cast<GLsizeiptr>(width) * height * 8, nullptr,
+        glBufferData(GL_PIXEL_PACK_BUFFER,
+                     static_cast<GLsizeiptr>(width) * height * (triangle_ids ? 8 : 4), nullptr,
                      GL_STREAM_READ);
         glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     }
@@ -91,6 +94,15 @@ void Framebuffer::resolve() const {
     check("Framebuffer::resolve");
 }
 
+void Framebuffer::draw_ids(bool on) const {
+    const int ids = id_attachment();
+    GLenum draw[3] = {ids == 1 ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE}, GL_NONE, GL_NONE};
+    if (on) draw[ids] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(ids);
+    if (on && triangle_ids_) draw[ids + 1] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(ids + 1);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_.get());
+    glDrawBuffers(ids + 2, draw);
+}
+
 void Framebuffer::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? ms_fbo_.get() : fbo_.get());
     glViewport(0, 0, width_, height_);
@@ -103,7 +115,7 @@ void Framebuffer::bind() const {
     if (kind_ == Kind::kItemBuffer || kind_ == Kind::kColourAndIds) {
         const GLuint zero[4] = {0, 0, 0, 0};
         glClearBufferuiv(GL_COLOR, id_attachment(), zero);
-        glClearBufferuiv(GL_COLOR, id_attachment() + 1, zero);
+        if (triangle_ids_) glClearBufferuiv(GL_COLOR, id_attachment() + 1, zero);
     }
 }
 
@@ -147,12 +159,12 @@ ItemBuffer Framebuffer::read_item_buffer() const { return start_item_buffer_read
 // Both attachments into one buffer, objects then triangles: glReadPixels into a bound
 // pixel-pack buffer returns at once on a GPU, the copy going on while the CPU works.
 Framebuffer::ItemBufferRead Framebuffer::start_item_buffer_read() const {
-    const ItemBufferRead read(width_, height_, ids_pbo_.get());
+    const ItemBufferRead read(width_, height_, ids_pbo_.get(), triangle_ids_);
     const auto bytes = static_cast<GLsizeiptr>(width_) * height_ * 4;
     glBindBuffer(GL_PIXEL_PACK_BUFFER, ids_pbo_.get());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < (triangle_ids_ ? 2 : 1); ++k) {
         glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(id_attachment() + k));
         glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT,
                      reinterpret_cast<void*>(static_cast<std::uintptr_t>(k * bytes)));
@@ -172,12 +184,16 @@ void Framebuffer::ItemBufferRead::finish(ItemBuffer& ib) {
     ib.resize(width_, height_);
     const std::size_t count = ib.object.size();
     glBindBuffer(GL_PIXEL_PACK_BUFFER, pbo_);
-    const void* data = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0,
-                                        static_cast<GLsizeiptr>(2 * count * 4), GL_MAP_READ_BIT);
+    const std::size_t targets = triangles_ ? 2 : 1;
+    const void* data = glMapBufferRange(
+        GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(targets * count * 4), GL_MAP_READ_BIT);
     if (data) {
         const auto* words = static_cast<const std::uint32_t*>(data);
         std::copy(words, words + count, ib.object.begin());
-        std::copy(words + count, words + 2 * count, ib.prim.begin());
+        if (triangles_)
+            std::copy(words + count, words + 2 * count, ib.prim.begin());
+        else
+            std::fill(ib.prim.begin(), ib.prim.end(), 0u);
         glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
     }
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);

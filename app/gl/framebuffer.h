@@ -21,7 +21,11 @@ class Framebuffer {
 
     // `samples` > 1 (colour only): drawn multisampled, into renderbuffers; resolve()
     // averages the samples into the texture that texture() and the reads see.
-    Framebuffer(Kind kind, int width, int height, int samples = 1);
+    // Without `triangle_ids` (a scene with no mesh: only a mesh's pixels need their
+    // triangle) the triangle attachment is neither drawn, cleared nor read, and the item
+    // buffer read back names triangle 0 everywhere: on llvmpipe the second id target cost
+    // many_spheres' raster frame about 1.5 ms.
+    Framebuffer(Kind kind, int width, int height, int samples = 1, bool triangle_ids = true);
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -30,6 +34,10 @@ class Framebuffer {
     // The colour attachments are textures, so a later pass can sample them.
     GLuint texture(int attachment = 0) const { return colour_[attachment].get(); }
     void bind() const;  // as the draw target, with the viewport set, depth (and ids) cleared
+    bool triangle_ids() const { return triangle_ids_; }
+    // Whether draws write the ids (kItemBuffer, kColourAndIds): off for what the tracer
+    // does not see (lines and points), on again after.
+    void draw_ids(bool on) const;
 
     Image read_colour() const;
     void read_colour(Image& into) const;  // into's storage reused (Image::resize)
@@ -45,10 +53,11 @@ class Framebuffer {
 
       private:
         friend class Framebuffer;
-        ItemBufferRead(int width, int height, GLuint pbo)
-            : width_(width), height_(height), pbo_(pbo) {}
+        ItemBufferRead(int width, int height, GLuint pbo, bool triangles)
+            : width_(width), height_(height), pbo_(pbo), triangles_(triangles) {}
         int width_, height_;
         GLuint pbo_;
+        bool triangles_;
     };
     ItemBufferRead start_item_buffer_read() const;
     // One pixel (x, y from the bottom left): a colour, or an item buffer's object id + 1.
@@ -60,6 +69,7 @@ class Framebuffer {
 
     Kind kind_;
     int width_, height_, samples_;
+    bool triangle_ids_;
     FramebufferHandle fbo_;
     TextureHandle colour_[3];
     RenderbufferHandle depth_;

@@ -18,7 +18,10 @@ RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& 
       phong_variants_(shaders / "raster.vert", shaders / "phong.frag"),
       ids_(shaders / "raster.vert", shaders / "itembuffer.frag"),
       wire_(shaders / "raster.vert", shaders / "wire.frag"),
-      shadow_(shaders / "raster.vert", shaders / "shadow.frag") {
+      shadow_(shaders / "raster.vert", shaders / "shadow.frag"),
+      triangle_ids_(std::any_of(scene.objects.begin(), scene.objects.end(), [](const Object& o) {
+          return std::holds_alternative<MeshRef>(o.shape);
+      })) {
     for (const rt::Texture& t : scene.textures) textures_.emplace_back().upload_surface(t);
     phong(false, false);  // a shader that does not compile fails here, not at the first frame
 }
@@ -150,20 +153,14 @@ void RasterRenderer::draw_wires(const std::vector<DrawItem>& items, const Camera
         if (!any) {
             set_camera(wire_, camera);
             glPointSize(3.0f);
-            if (drawing_ids_) {
-                const GLenum colour_only[] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE};
-                glDrawBuffers(3, colour_only);
-            }
+            if (drawing_ids_) drawing_ids_->draw_ids(false);
             any = true;
         }
         set_object(wire_, item, camera);
         wire_.set("u_colour", scene_.materials[item.material].kd);
         item.mesh->draw(item.first_vertex, item.vertex_count);
     }
-    if (any && drawing_ids_) {
-        const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-        glDrawBuffers(3, all);
-    }
+    if (any && drawing_ids_) drawing_ids_->draw_ids(true);
 }
 
 void RasterRenderer::draw_ids(const Camera& camera) {
@@ -185,21 +182,21 @@ Framebuffer& RasterRenderer::target(std::optional<Framebuffer>& fb, Framebuffer:
                                     const Camera& camera, int samples) {
     if (!fb || fb->width() != camera.cols || fb->height() != camera.rows ||
         fb->samples() != samples)
-        fb.emplace(kind, camera.cols, camera.rows, samples);
+        fb.emplace(kind, camera.cols, camera.rows, samples, triangle_ids_);
     return *fb;
 }
 
 const Framebuffer& RasterRenderer::render_to_texture(const Camera& camera, bool with_ids) {
-    drawing_ids_ = with_ids && shares_item_buffer();
-    Framebuffer& fb = drawing_ids_
-                          ? target(shared_target_, Framebuffer::Kind::kColourAndIds, camera)
+    const bool ids = with_ids && shares_item_buffer();
+    Framebuffer& fb = ids ? target(shared_target_, Framebuffer::Kind::kColourAndIds, camera)
                           : target(colour_target_, Framebuffer::Kind::kColour, camera, msaa_);
+    drawing_ids_ = ids ? &fb : nullptr;
     fb.bind();
     const glm::vec3 bg = scene_.background;
     const GLfloat clear[4] = {bg.x, bg.y, bg.z, 1.0f};
     glClearBufferfv(GL_COLOR, 0, clear);  // not glClear: it would write floats into the ids
     draw(camera);
-    drawing_ids_ = false;
+    drawing_ids_ = nullptr;
     fb.resolve();
     return fb;
 }

@@ -114,7 +114,8 @@ class RasterRenderer {
     std::optional<Framebuffer> colour_target_;
     std::optional<Framebuffer> id_target_;
     std::optional<Framebuffer> shared_target_;  // colour and ids from one draw
-    bool drawing_ids_ = false;                  // the bound target is shared_target_
+    const Framebuffer* drawing_ids_ = nullptr;  // the bound target, where it is shared_target_
+    bool triangle_ids_;                         // the scene has a mesh (Framebuffer's ctor)
     int msaa_ = 1;
     bool shadow_maps_ = false;
     int shadow_size_ = 1024;
