@@ -272,11 +272,12 @@ void Viewer::collect_trace() {
         if (const auto& plain = result->without_item_buffer)
             std::printf(
                 "item buffer: %s %.3f s, primary %.3f s instead of %.3f s, %llu of %zu pixels "
-                "disagree\n",
+                "disagree; the frame %.3f s instead of %.3f s\n",
                 stats_.item_buffer_shared ? "read back from the raster pass" : "its own pass",
                 stats_.item_buffer_ms * 1e-3, result->stats.primary_seconds, plain->primary_seconds,
                 static_cast<unsigned long long>(result->item_buffer_disagreements),
-                traced_image_.pixels.size());
+                traced_image_.pixels.size(), result->stats.seconds + stats_.item_buffer_ms * 1e-3,
+                plain->seconds);
         std::fflush(stdout);
         stats_.full = std::move(result);
     }
