@@ -99,7 +99,7 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int 
             settled |= same;  // nothing here nor around it
             continue;
         }
-        settled |= scene.intersect_primitive_packet(id - 1, &ib.prim[at], lanes, hits, same);
+        settled |= scene.intersect_primitive_packet(id - 1, &ib.prim[at], lanes, hits, same, true);
     }
     const unsigned edge = all & ~settled;
     if (edge == 0) return 0;

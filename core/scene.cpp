@@ -151,9 +151,10 @@ namespace {
 // the rays' records. Returns their bits.
 template <class Shape>
 unsigned shape_packet(const Shape& shape, std::uint32_t object, const RayLanes<kPacketWidth>& r,
-                      Hit* hits, unsigned lanes) {
+                      Hit* hits, unsigned lanes, bool fresh) {
     LaneHits<kPacketWidth> out;
-    out.t_max = t_bounds<kPacketWidth>(hits, lanes);
+    out.t_max =
+        fresh ? splat<Lanes<kPacketWidth>::Float>(kInfinity) : t_bounds<kPacketWidth>(hits, lanes);
     const unsigned hit = intersect_lanes(shape, r, lanes, out);
     for (unsigned rest = hit; rest != 0; rest &= rest - 1) {
         const unsigned lane = __builtin_ctz(rest);
@@ -200,18 +201,18 @@ unsigned plane_packet(const Plane& p, std::uint32_t object, const Ray* rays, Hit
 
 unsigned Scene::intersect_primitive_packet(std::uint32_t object, const std::uint32_t* prims,
                                            const RayLanes<kPacketWidth>& world, Hit* hits,
-                                           unsigned lanes) const {
+                                           unsigned lanes, bool fresh) const {
     if (object >= objects.size() || lanes == 0) return 0;
     const Object& o = objects[object];
     RayLanes<kPacketWidth> local;
     if (o.transform) local = world.to_object(*o.transform);
     const RayLanes<kPacketWidth>& rays = o.transform ? local : world;
     if (const auto* plane = std::get_if<Plane>(&o.shape))
-        return shape_packet(*plane, object, rays, hits, lanes);
+        return shape_packet(*plane, object, rays, hits, lanes, fresh);
     if (const auto* sphere = std::get_if<Sphere>(&o.shape))
-        return shape_packet(*sphere, object, rays, hits, lanes);
+        return shape_packet(*sphere, object, rays, hits, lanes, fresh);
     if (const auto* triangle = std::get_if<Triangle>(&o.shape))
-        return shape_packet(*triangle, object, rays, hits, lanes);
+        return shape_packet(*triangle, object, rays, hits, lanes, fresh);
     const auto& mesh = meshes[std::get<MeshRef>(o.shape).mesh];
     const unsigned found = mesh.intersect_triangles_packet(prims, rays, hits, lanes);
     for (unsigned rest = found; rest != 0; rest &= rest - 1)

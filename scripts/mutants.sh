@@ -316,6 +316,9 @@ mutant triangle-ids-drawn-without-a-mesh app/gl/raster_renderer.cpp \
 mutant triangle-ids-read-though-not-drawn app/gl/framebuffer.cpp \
     'for (int k = 0; k < (triangle_ids_ ? 2 : 1); ++k) {' 'for (int k = 0; k < 2; ++k) {' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*:*SameItemBuffer*'
+mutant item-buffer-edges-take-their-hits-as-fresh core/scene.h \
+    'unsigned lanes, bool fresh = false) const;' 'unsigned lanes, bool fresh = true) const;' \
+    rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
 mutant small-scene-far-out-not-rebased core/scene_loader.cpp \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')
