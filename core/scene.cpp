@@ -158,10 +158,14 @@ unsigned shape_packet(const Shape& shape, std::uint32_t object, const RayLanes<k
     const unsigned hit = intersect_lanes(shape, r, lanes, out);
     for (unsigned rest = hit; rest != 0; rest &= rest - 1) {
         const unsigned lane = __builtin_ctz(rest);
-        if constexpr (std::is_same_v<Shape, Triangle>)
+        if constexpr (std::is_same_v<Shape, Triangle>) {
             hits[lane] = Hit{out.t[lane], object, 0, out.b1[lane], out.b2[lane]};
-        else
+        } else if (fresh) {  // the rest of a fresh hit is already what it should be
+            hits[lane].t = out.t[lane];
+            hits[lane].object = object;
+        } else {
             hits[lane] = Hit{out.t[lane], object, 0, 0.0f, 0.0f};  // no barycentrics
+        }
     }
     return hit;
 }

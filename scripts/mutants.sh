@@ -319,6 +319,9 @@ mutant triangle-ids-read-though-not-drawn app/gl/framebuffer.cpp \
 mutant item-buffer-edges-take-their-hits-as-fresh core/scene.h \
     'unsigned lanes, bool fresh = false) const;' 'unsigned lanes, bool fresh = true) const;' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
+mutant item-buffer-fresh-hit-keeps-no-object core/scene.cpp \
+    '            hits[lane].object = object;' '' \
+    rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
 mutant small-scene-far-out-not-rebased core/scene_loader.cpp \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')
