@@ -34,7 +34,6 @@ class Framebuffer {
     // The colour attachments are textures, so a later pass can sample them.
     GLuint texture(int attachment = 0) const { return colour_[attachment].get(); }
     void bind() const;  // as the draw target, with the viewport set, depth (and ids) cleared
-    bool triangle_ids() const { return triangle_ids_; }
     // Whether draws write the ids (kItemBuffer, kColourAndIds): off for what the tracer
     // does not see (lines and points), on again after.
     void draw_ids(bool on) const;
