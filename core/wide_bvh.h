@@ -51,6 +51,7 @@ class WideBvh {
         return nodes_.size() * sizeof(Node) + prims_.size() * sizeof(std::uint32_t);
     }
     std::size_t node_count() const { return nodes_.size(); }
+    std::span<const Node> nodes() const { return nodes_; }  // the root first
     std::span<const std::uint32_t> order() const { return prims_; }
 
     // As Bvh::traverse_leaves: `hit_leaf(first_slot, count, t_max)` for the leaves the

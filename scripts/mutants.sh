@@ -148,6 +148,16 @@ mutant wide-bvh-skips-a-child core/wide_bvh.h \
     'for (mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
     'for (mask &= mask - 1, mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
     rt_tests $(unit '*WideBvh*:*Accel*')
+mutant collapse-splits-one-lane-to-the-left core/wide_bvh.cpp \
+    'for (int k = 2; k < j; ++k) {' 'for (int k = 2; k < 2; ++k) {' \
+    rt_tests $(unit '*WideBvh*:*Accel*')
+mutant collapse-never-spreads-a-subtree core/wide_bvh.cpp \
+    'const bool fewer = !(both[j] < cost_[i][j - 2]);' 'const bool fewer = true;' \
+    rt_tests $(unit '*WideBvh*:*Accel*')
+mutant collapse-gives-the-right-child-one-lane core/wide_bvh.cpp \
+    'lanes_of(tree_[index].first, N - split_[index][0], lanes, n);' \
+    'lanes_of(tree_[index].first, 1, lanes, n);' \
+    rt_tests $(unit '*WideBvh*:*Accel*')
 mutant bvh-leaf-left-in-scratch core/bvh.cpp \
     'if (r != refs) std::copy(r + begin, r + end, refs + begin);' \
     'if (false) std::copy(r + begin, r + end, refs + begin);' \

@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
+#include <span>
 
 #include <glm/geometric.hpp>
 
 #include "core/accel.h"
+#include "core/bvh.h"
 #include "core/mesh.h"
 #include "core/scene.h"
 #include "core/shapes.h"
@@ -296,6 +299,112 @@ TYPED_TEST(WideBvhTest, VisitsExactlyTheBoxesTheRayEnters) {
             return true;
         });
         EXPECT_EQ(limit, nearest) << "ray " << i;
+    }
+}
+
+// What a ray's visits cost (core/wide_bvh.cpp): the wide nodes' areas, summed. A wide
+// node's box is its lanes' boxes together.
+template <class Wide>
+double wide_cost(const Wide& wide) {
+    double sum = 0.0;
+    for (const auto& node : wide.nodes()) {
+        Aabb box;
+        for (int lane = 0; lane < Wide::kWidth; ++lane) {
+            if (!(node.bounds[0][lane] <= node.bounds[3][lane])) continue;  // unused
+            box.grow(vec3(node.bounds[0][lane], node.bounds[1][lane], node.bounds[2][lane]));
+            box.grow(vec3(node.bounds[3][lane], node.bounds[4][lane], node.bounds[5][lane]));
+        }
+        sum += box.half_area();
+    }
+    return sum;
+}
+
+// The same for the greedy collapse of a binary tree (open the child of largest area
+// until there are n lanes), the collapse the wide BVH used before, as a yardstick; with
+// its node and lane counts.
+struct Collapsed {
+    double cost = 0.0;
+    std::size_t nodes = 0, lanes = 0;
+};
+void greedy_collapse(std::span<const BvhNode> tree, std::uint32_t index, int n_max,
+                     Collapsed& out) {
+    const auto area = [&](std::uint32_t i) { return Aabb{tree[i].lo, tree[i].hi}.half_area(); };
+    std::vector<std::uint32_t> lanes{index};
+    while (static_cast<int>(lanes.size()) < n_max) {
+        int widest = -1;
+        for (int k = 0; k < static_cast<int>(lanes.size()); ++k)
+            if (!tree[lanes[k]].is_leaf() && (widest < 0 || area(lanes[k]) > area(lanes[widest])))
+                widest = k;
+        if (widest < 0) break;
+        const std::uint32_t parent = lanes[widest];
+        lanes[widest] = parent + 1;
+        lanes.push_back(tree[parent].first);
+    }
+    out.cost += area(index);
+    ++out.nodes;
+    out.lanes += lanes.size();
+    for (std::uint32_t lane : lanes)
+        if (!tree[lane].is_leaf()) greedy_collapse(tree, lane, n_max, out);
+}
+
+// The collapse of least cost costs no more than the greedy one on the same binary tree
+// (it is the least), and its nodes are fuller (on these, by a third of a lane or more):
+// on a tessellated sphere, a height field and a soup of boxes.
+TYPED_TEST(WideBvhTest, TheCollapseCostsNoMoreThanTheGreedyOne) {
+    std::vector<std::pair<const char*, std::vector<Aabb>>> inputs;
+    const auto triangle_boxes = [](const TriangleMesh& mesh) {
+        std::vector<Aabb> boxes;
+        for (const auto& t : mesh.triangles) {
+            Aabb b;
+            for (int k = 0; k < 3; ++k) b.grow(mesh.positions[t[k]]);
+            boxes.push_back(b);
+        }
+        return boxes;
+    };
+    inputs.emplace_back("sphere", triangle_boxes(tessellate_unit_sphere(96)));
+    TriangleMesh field;
+    const int n = 90;
+    for (int j = 0; j <= n; ++j) {
+        for (int i = 0; i <= n; ++i) {
+            const float x = static_cast<float>(i), z = static_cast<float>(j);
+            field.positions.push_back(
+                {0.1f * x, std::sin(0.3f * x) * std::cos(0.2f * z), 0.1f * z});
+        }
+    }
+    for (std::uint32_t j = 0; j < n; ++j) {
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::uint32_t a = j * (n + 1) + i, c = a + n + 1;
+            field.triangles.push_back({a, c, a + 1});
+            field.triangles.push_back({a + 1, c, c + 1});
+        }
+    }
+    inputs.emplace_back("height field", triangle_boxes(field));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> size(0.0f, 1.0f);
+    std::vector<Aabb> soup;
+    for (int i = 0; i < 6000; ++i) {
+        const vec3 lo = random_point(rng, 20.0f);
+        soup.push_back({lo, lo + vec3(size(rng), size(rng), size(rng))});
+    }
+    inputs.emplace_back("soup", std::move(soup));
+
+    for (const auto& [name, boxes] : inputs) {
+        TypeParam wide;
+        wide.build(boxes, 4, 1);
+        Bvh binary;
+        binary.build(boxes, 4, 1);
+        Collapsed greedy;
+        greedy_collapse(binary.nodes(), 0, TypeParam::kWidth, greedy);
+        EXPECT_LE(wide_cost(wide), greedy.cost * (1.0 + 1e-6)) << name;
+        std::size_t leaves = 0;
+        wide.for_each_leaf([&](std::uint32_t, std::uint32_t) { ++leaves; });
+        // Lanes in use per node (every node but the root is a lane of another).
+        const auto per_node = [](std::size_t lanes, std::size_t nodes) {
+            return static_cast<double>(lanes) / static_cast<double>(nodes);
+        };
+        EXPECT_GE(per_node(leaves + wide.node_count() - 1, wide.node_count()),
+                  per_node(greedy.lanes, greedy.nodes) + 0.3)
+            << name;
     }
 }
 

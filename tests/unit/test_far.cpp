@@ -195,5 +195,41 @@ TEST(Far, CollapsedGeometryBuildsOneLeaf) {
     EXPECT_EQ(visits, 5000);
 }
 
+// Two clusters so far apart that the box around both has an area beyond float (the
+// collapse's cost for the root is infinite): the tree still holds every box, and a ray
+// visits each box it enters.
+TEST(Far, ClustersWhoseJointAreaOverflowsStillBuildAWholeTree) {
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 3000; ++i) {
+        const float side = i % 2 == 0 ? -1.0f : 1.0f;
+        const vec3 at(side * 1e19f + 1e15f * static_cast<float>(i % 41),
+                      side * 1e19f + 1e15f * static_cast<float>(i % 37),
+                      1e15f * static_cast<float>(i % 7));
+        boxes.push_back({at, at + vec3(2e15f)});
+    }
+    DefaultWideBvh tree;
+    tree.build(boxes, 4);
+    EXPECT_GT(tree.node_count(), 1u);
+    std::size_t leaf_prims = 0;
+    tree.for_each_leaf([&](std::uint32_t, std::uint32_t count) { leaf_prims += count; });
+    EXPECT_EQ(leaf_prims, boxes.size());
+    for (const float side : {-1.0f, 1.0f}) {
+        const Ray ray{vec3(side * 1e19f + 1.6e16f, side * 1e19f + 1.6e16f, -1e18f), vec3(0, 0, 1)};
+        const vec3 inv = 1.0f / ray.dir;
+        std::size_t expected = 0;
+        for (const Aabb& b : boxes)
+            expected += slab_entry(b, ray.origin, inv, kInfinity) < kInfinity;
+        ASSERT_GT(expected, 0u);
+        std::size_t visited = 0;
+        float t_max = kInfinity;
+        tree.traverse<false>(ray, t_max, [&](std::uint32_t slot, float&) {
+            visited +=
+                slab_entry(boxes[tree.order()[slot]], ray.origin, inv, kInfinity) < kInfinity;
+            return false;
+        });
+        EXPECT_EQ(visited, expected) << side;
+    }
+}
+
 }  // namespace
 }  // namespace rt
