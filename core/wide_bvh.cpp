@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/large_array.h"
+
 namespace rt {
 namespace {
 
@@ -59,12 +61,16 @@ class Collapser {
             std::array<float, N + 1> both{};
             std::array<std::uint8_t, N + 1> k_best{};
             for (int j = 2; j <= N; ++j) {
-                both[j] = left[0] + right[j - 2];
-                k_best[j] = 1;
-                for (int k = 2; k < j; ++k) {
+                float best = left[0] + right[j - 2];
+                int k_at = 1;
+                for (int k = 2; k < j; ++k) {  // without branches: which k wins is random
                     const float c = left[k - 1] + right[j - k - 1];
-                    if (c < both[j]) both[j] = c, k_best[j] = static_cast<std::uint8_t>(k);
+                    const bool cheaper = c < best;
+                    best = cheaper ? c : best;
+                    k_at = cheaper ? k : k_at;
                 }
+                both[j] = best;
+                k_best[j] = static_cast<std::uint8_t>(k_at);
             }
             // One lane: a wide node of its own, its children in its N lanes. More lanes:
             // the children's, where that costs less than fewer lanes.
@@ -118,8 +124,9 @@ class Collapser {
 
     std::span<const BvhNode> tree_;
     std::vector<WideBvhNode<N>>& out_;
-    std::vector<std::array<float, N>> cost_;          // [node][j - 1]: up to j lanes
-    std::vector<std::array<std::uint8_t, N>> split_;  // [node][j - 1]: lanes to the left
+    // Written in full, children before parents, before anything reads them.
+    LargeArray<std::array<float, N>> cost_;          // [node][j - 1]: up to j lanes
+    LargeArray<std::array<std::uint8_t, N>> split_;  // [node][j - 1]: lanes to the left
 };
 
 }  // namespace
