@@ -1,0 +1,100 @@
+#!/usr/bin/env python3
+"""Writes the meshes docs/BENCHMARKS.md times besides the shipped ones, each a kind of
+real model the shipped ones do not cover:
+
+  vase.obj     120,000 long, thin triangles (a surface of revolution, 1200 segments
+               around, 50 rings): a lathed or CAD model
+  terrain.obj  96,800 triangles of a noisy height field (220 x 220 cells): a landscape,
+               rays grazing it
+  bunny4.obj   277,804 triangles: the Stanford bunny with each triangle split in four at
+               its edges' midpoints (a scan at four times the resolution)
+
+Usage: scripts/make_bench_meshes.py OUT_DIR [BUNNY_OBJ]
+The same files on every run (a fixed seed)."""
+import math
+import os
+import random
+import sys
+
+
+def write_obj(path, vertices, faces):
+    with open(path, "w") as f:
+        for v in vertices:
+            f.write("v %.6f %.6f %.6f\n" % v)
+        for a, b, c in faces:
+            f.write("f %d %d %d\n" % (a + 1, b + 1, c + 1))
+    print("%s: %d vertices, %d triangles" % (path, len(vertices), len(faces)))
+
+
+def vase(around=1200, rings=50):
+    vertices, faces = [], []
+    for j in range(rings + 1):
+        y = j / rings * 3.0
+        r = 0.6 + 0.3 * math.sin(y * 2.1) + 0.1 * math.cos(y * 5)
+        for i in range(around):
+            t = 2 * math.pi * i / around
+            vertices.append((r * math.cos(t), y, r * math.sin(t)))
+    for j in range(rings):
+        for i in range(around):
+            a, b = j * around + i, j * around + (i + 1) % around
+            faces += [(a, b, b + around), (a, b + around, a + around)]
+    return vertices, faces
+
+
+def terrain(n=220, seed=1):
+    rng = random.Random(seed)
+    vertices, faces = [], []
+    for j in range(n + 1):
+        for i in range(n + 1):
+            x, z = i / n * 10 - 5, j / n * 10 - 5
+            h = (0.6 * math.sin(x * 1.3) * math.cos(z * 1.1) + 0.25 * math.sin(x * 4.1 + z * 3.3) +
+                 0.05 * rng.random())
+            vertices.append((x, h, z))
+    for j in range(n):
+        for i in range(n):
+            a = j * (n + 1) + i
+            c = a + n + 1
+            faces += [(a, c, a + 1), (a + 1, c, c + 1)]
+    return vertices, faces
+
+
+def subdivided(path):
+    vertices, faces = [], []
+    with open(path) as f:
+        for line in f:
+            p = line.split()
+            if p and p[0] == "v":
+                vertices.append(tuple(map(float, p[1:4])))
+            elif p and p[0] == "f":
+                faces.append(tuple(int(x.split("/")[0]) - 1 for x in p[1:4]))
+    middle = {}
+
+    def mid(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in middle:
+            vertices.append(tuple((x + y) / 2 for x, y in zip(vertices[a], vertices[b])))
+            middle[key] = len(vertices) - 1
+        return middle[key]
+
+    out = []
+    for a, b, c in faces:
+        ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+        out += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+    return vertices, out
+
+
+def main():
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    out = sys.argv[1]
+    here = os.path.dirname(os.path.abspath(__file__))
+    bunny = sys.argv[2] if len(sys.argv) > 2 else os.path.join(here, "..", "assets", "models",
+                                                               "stanford-bunny.obj")
+    os.makedirs(out, exist_ok=True)
+    write_obj(os.path.join(out, "vase.obj"), *vase())
+    write_obj(os.path.join(out, "terrain.obj"), *terrain())
+    write_obj(os.path.join(out, "bunny4.obj"), *subdivided(bunny))
+
+
+if __name__ == "__main__":
+    main()
