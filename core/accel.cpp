@@ -2,20 +2,20 @@
 
 namespace rt {
 
-void Accel::build(std::span<const Aabb> boxes, AccelKind kind, std::uint32_t leaf_size,
-                  int threads) {
+void Accel::build(std::span<const Aabb> boxes, AccelKind kind, std::uint32_t leaf_size, int threads,
+                  std::uint32_t split_above) {
     kind_ = kind;
     order_.clear();
     switch (kind) {
         case AccelKind::kBvh: {
             DefaultWideBvh wide;
-            wide.build(boxes, leaf_size, threads);
+            wide.build(boxes, leaf_size, threads, split_above);
             impl_ = std::move(wide);
             return;
         }
         case AccelKind::kBvh2: {
             Bvh bvh;
-            bvh.build(boxes, leaf_size, threads);
+            bvh.build(boxes, leaf_size, threads, split_above);
             impl_ = std::move(bvh);
             return;
         }

@@ -51,11 +51,12 @@ class BruteForce {
 
 class Accel {
   public:
-    // leaf_size: how many primitives the caller tests at once (4 for a mesh's
-    // Triangle4s), so the BVHs stop splitting there. The BVHs build on `threads` threads
-    // (0: all the hardware's).
+    // leaf_size: how many primitives the caller tests at once (a mesh: 8 in the wide BVH
+    // under AVX, two Triangle4s in one test; else 4), so the BVHs stop splitting there;
+    // above split_above only where a split would not pay (Bvh::build). The BVHs build on
+    // `threads` threads (0: all the hardware's).
     void build(std::span<const Aabb> boxes, AccelKind kind, std::uint32_t leaf_size = 1,
-               int threads = 0);
+               int threads = 0, std::uint32_t split_above = 0);
     AccelKind kind() const { return kind_; }
     std::size_t memory_bytes() const;
     // Slot s of the traversal is primitive order()[s]: callers may keep their data in

@@ -118,6 +118,7 @@ struct Builder {
     PrimRef* refs;     // where each leaf's refs end up
     PrimRef* scratch;  // as large as refs: the other side of every other partition
     std::uint32_t max_leaf;
+    std::uint32_t split_above;  // up to max_leaf: a leaf only where a split does not pay
     std::vector<BvhNode> nodes;
     TaskPool* pool = nullptr;  // none: all on this thread
 
@@ -277,9 +278,15 @@ struct Builder {
             std::sort(refs + begin, refs + end,
                       [](const PrimRef& a, const PrimRef& b) { return a.index() < b.index(); });
         };
-        if (count <= max_leaf || depth >= Bvh::kMaxDepth) return leaf();
+        if (count <= split_above || depth >= Bvh::kMaxDepth) return leaf();
         const Split split = find_split(begin, end, bounds, r);
         if (split.axis < 0) return leaf();  // all centres in one point: nothing separates them
+        // The caller tests up to max_leaf at once (a mesh's eight triangles are one test,
+        // core/mesh.cpp), so such a subtree is split only where its halves' boxes are much
+        // smaller together: a room's walls, not a patch of a scanned surface.
+        if (count <= max_leaf && split.left.box.half_area() + split.right.box.half_area() >=
+                                     Bvh::kKeepLeaf * bounds.box.half_area())
+            return leaf();
         const std::uint32_t mid = partition(begin, end, split, r);
 
         // The right subtree to the pool (into nodes of its own) while this thread builds the
@@ -289,7 +296,7 @@ struct Builder {
         const bool fork = pool && end - mid >= kMinSubtree && mid - begin >= kMinSubtree;
         if (fork)
             pool->run(group, [&, r, right = split.right] {
-                Builder sub{refs, scratch, max_leaf, {}, pool};
+                Builder sub{refs, scratch, max_leaf, split_above, {}, pool};
                 sub.nodes.reserve(2 * (end - mid) / max_leaf);
                 sub.nodes.emplace_back();
                 sub.build(0, mid, end, right, depth + 1, r);
@@ -315,7 +322,8 @@ struct Builder {
 
 }  // namespace
 
-void Bvh::build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf, int threads) {
+void Bvh::build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf, int threads,
+                std::uint32_t split_above) {
     nodes_.clear();
     prims_.clear();
     if (prim_boxes.empty()) return;
@@ -343,7 +351,9 @@ void Bvh::build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf, int th
         bounds.box.grow(b.box);
         bounds.centres.grow(b.centres);
     }
-    Builder builder{refs.data(), scratch.data(), std::max(1u, max_leaf), {}, workers};
+    max_leaf = std::max(1u, max_leaf);
+    split_above = split_above == 0 ? max_leaf : std::min(split_above, max_leaf);
+    Builder builder{refs.data(), scratch.data(), max_leaf, split_above, {}, workers};
     builder.nodes.reserve(2 * prim_boxes.size() / builder.max_leaf + 1);
     builder.nodes.emplace_back();
     builder.build(0, 0, count, bounds, 0, refs.data());

@@ -26,9 +26,14 @@ class Bvh {
   public:
     static constexpr int kMaxDepth = 60;  // the traversal stack is sized from this
 
-    // Subtrees of at most max_leaf primitives become leaves (see Accel::build). On
-    // `threads` threads (0: all the hardware's); the tree is the same on any number.
-    void build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf = 2, int threads = 0);
+    // Subtrees of at most max_leaf primitives become leaves (see Accel::build); of more
+    // than split_above (if not 0) only where splitting them would not cut what a ray
+    // enters: where the two halves' boxes have at least kKeepLeaf of the subtree's area
+    // between them. On `threads` threads (0: all the hardware's); the tree is the same on
+    // any number.
+    static constexpr float kKeepLeaf = 0.8f;
+    void build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf = 2, int threads = 0,
+               std::uint32_t split_above = 0);
 
     bool empty() const { return nodes_.empty(); }
     Aabb bounds() const { return empty() ? Aabb{} : Aabb{nodes_[0].lo, nodes_[0].hi}; }

@@ -15,6 +15,13 @@
 #include "core/shapes.h"
 
 namespace rt {
+namespace {
+// A wide BVH's leaves: up to one test of the SIMD width. Under AVX, two packs tested as
+// one of eight lanes (core/triangle4.h): a leaf of eight costs what a leaf of four did, and
+// the tree has fewer nodes (docs/BENCHMARKS.md, "Leaves of eight"). A subtree of more than
+// four is split where that cuts the area rays enter (Bvh::build). Four under SSE2.
+constexpr std::uint32_t kWideLeaf = kBvhWidth;
+}  // namespace
 
 void TriangleMesh::build(AccelKind kind, int threads) {
     std::vector<Aabb> boxes(triangles.size());
@@ -23,7 +30,8 @@ void TriangleMesh::build(AccelKind kind, int threads) {
         for (int k = 0; k < 3; ++k) boxes[i].grow(positions[triangles[i][k]]);
         bounds_.grow(boxes[i]);
     }
-    accel_.build(boxes, kind, kTriangle4Lanes, threads);
+    accel_.build(boxes, kind, kind == AccelKind::kBvh ? kWideLeaf : kTriangle4Lanes, threads,
+                 kTriangle4Lanes);
     // Each leaf's first pack (a pass over the leaves), then the packs filled in parallel.
     const auto order = accel_.order();
     struct Leaf {
@@ -100,19 +108,14 @@ bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
     const ShearedRay sheared(r);
     return accel_.traverse_leaves<false>(
         r, hit.t, [&](std::uint32_t leaf, std::uint32_t count, float& t_max) RT_FORCE_INLINE {
-            bool found = false;
             const std::uint32_t start = first_pack(leaf);
-            for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
-                const Triangle4Hit h = rt::intersect(packs_[start + k], sheared, t_max);
-                if (h.lane < 0) continue;
-                t_max = h.t;
-                hit.prim =
-                    pack_prims_[kTriangle4Lanes * (start + k) + static_cast<std::uint32_t>(h.lane)];
-                hit.b1 = h.b1;
-                hit.b2 = h.b2;
-                found = true;
-            }
-            return found;
+            const Triangle4Hit h = leaf_hit(start, count, sheared, t_max);
+            if (h.lane < 0) return false;
+            t_max = h.t;
+            hit.prim = pack_prims_[kTriangle4Lanes * start + static_cast<std::uint32_t>(h.lane)];
+            hit.b1 = h.b1;
+            hit.b2 = h.b2;
+            return true;
         });
 }
 
@@ -133,10 +136,7 @@ bool TriangleMesh::occluded(const Ray& r, float t_max) const {
     const ShearedRay sheared(r);
     return accel_.traverse_leaves<true>(
         r, t_max, [&](std::uint32_t leaf, std::uint32_t count, float& t_limit) RT_FORCE_INLINE {
-            const std::uint32_t start = first_pack(leaf);
-            for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k)
-                if (rt::intersect(packs_[start + k], sheared, t_limit).lane >= 0) return true;
-            return false;
+            return leaf_hit(first_pack(leaf), count, sheared, t_limit).lane >= 0;
         });
 }
 

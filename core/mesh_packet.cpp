@@ -79,13 +79,10 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
             } else {
                 for (; lanes != 0; lanes &= lanes - 1) {
                     const unsigned ray = __builtin_ctz(lanes);
-                    for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
-                        const Triangle4Hit h =
-                            rt::intersect(packs_[start + k], shear.each[ray], t_max[ray]);
-                        if (h.lane < 0) continue;
-                        t_max[ray] = h.t;
-                        record(ray, start + k, h.lane, h.b1, h.b2);
-                    }
+                    const Triangle4Hit h = leaf_hit(start, count, shear.each[ray], t_max[ray]);
+                    if (h.lane < 0) continue;
+                    t_max[ray] = h.t;
+                    record(ray, start, h.lane, h.b1, h.b2);
                 }
             }
             found |= hit;
@@ -121,13 +118,8 @@ unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsi
             } else {
                 for (; lanes != 0; lanes &= lanes - 1) {
                     const unsigned ray = __builtin_ctz(lanes);
-                    for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
-                        if (rt::intersect(packs_[start + k], shear.each[ray], limits[ray]).lane >=
-                            0) {
-                            hit |= 1u << ray;
-                            break;
-                        }
-                    }
+                    if (leaf_hit(start, count, shear.each[ray], limits[ray]).lane >= 0)
+                        hit |= 1u << ray;
                 }
             }
             blocked |= hit;

@@ -108,22 +108,24 @@ template <class V>
 
 }  // namespace detail
 
-// `lanes`: the lanes that may hit (a bit each); the others are computed and ignored, so a
-// lane's answer is the same whichever others are asked for.
-[[gnu::always_inline]] inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r,
-                                                     float t_max, unsigned lanes = 0xfu) {
-    const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
-    const auto o = detail::watertight_values<Float4>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
-    const Mask4 same_sign = ((o.u >= 0.0f) & (o.v >= 0.0f) & (o.w >= 0.0f)) |
-                            ((o.u <= 0.0f) & (o.v <= 0.0f) & (o.w <= 0.0f));
-    const Mask4 inside = same_sign & (o.det != 0.0f);
+namespace detail {
+
+// The closest of the triangles in V's lanes (rel: a vertex's coordinate relative to the
+// ray's origin, as lanes) within (0, t_max), among `lanes`.
+template <class V, class Rel>
+[[gnu::always_inline]] inline Triangle4Hit closest_in_lanes(const Rel& rel, const ShearedRay& r,
+                                                            float t_max, unsigned lanes) {
+    const auto o = watertight_values<V>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
+    const auto same_sign = ((o.u >= 0.0f) & (o.v >= 0.0f) & (o.w >= 0.0f)) |
+                           ((o.u <= 0.0f) & (o.v <= 0.0f) & (o.w <= 0.0f));
+    const auto inside = same_sign & (o.det != 0.0f);
     Triangle4Hit best;
     if (bits(inside) == 0) return best;  // most leaf tests end here, before any division
-    const Float4 t_scaled = r.sz * (o.u * o.az + o.v * o.bz + o.w * o.cz);  // t * det
-    const Float4 t = t_scaled / o.det;
+    const V t_scaled = r.sz * (o.u * o.az + o.v * o.bz + o.w * o.cz);  // t * det
+    const V t = t_scaled / o.det;
     unsigned candidates = bits(inside & (t > 0.0f) & (t < t_max)) & lanes;
     if (candidates == 0) return best;
-    candidates &= bits(vabs(t_scaled) > detail::t_det_error(o, splat<Float4>(std::fabs(r.sz))));
+    candidates &= bits(vabs(t_scaled) > t_det_error(o, splat<V>(std::fabs(r.sz))));
     for (; candidates != 0; candidates &= candidates - 1) {
         const int lane = __builtin_ctz(candidates);
         if (t[lane] < best.t) best = {lane, t[lane], 0.0f, 0.0f};
@@ -134,5 +136,28 @@ template <class V>
     }
     return best;
 }
+
+}  // namespace detail
+
+// `lanes`: the lanes that may hit (a bit each); the others are computed and ignored, so a
+// lane's answer is the same whichever others are asked for.
+[[gnu::always_inline]] inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r,
+                                                     float t_max, unsigned lanes = 0xfu) {
+    const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
+    return detail::closest_in_lanes<Float4>(rel, r, t_max, lanes);
+}
+
+#if defined(__AVX__)
+// Two packs in one test of eight lanes, each lane the very arithmetic of the test above:
+// a wide BVH's leaf of five to eight triangles costs one test, as a leaf of four does.
+// The hit's lane: 0-3 in `a`, 4-7 in `b`.
+[[gnu::always_inline]] inline Triangle4Hit intersect(const Triangle4& a, const Triangle4& b,
+                                                     const ShearedRay& r, float t_max) {
+    const auto rel = [&](int vertex, int axis) {
+        return Float8(_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis])) - r.origin[axis];
+    };
+    return detail::closest_in_lanes<Float8>(rel, r, t_max, 0xffu);
+}
+#endif
 
 }  // namespace rt

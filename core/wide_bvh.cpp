@@ -132,14 +132,15 @@ class Collapser {
 }  // namespace
 
 template <int N>
-void WideBvh<N>::build(std::span<const Aabb> prim_boxes, std::uint32_t leaf_size, int threads) {
+void WideBvh<N>::build(std::span<const Aabb> prim_boxes, std::uint32_t leaf_size, int threads,
+                       std::uint32_t split_above) {
     nodes_.clear();
     prims_.clear();
     bounds_ = Aabb{};
     if (prim_boxes.empty()) return;
     leaf_size = std::max(1u, leaf_size);
     Bvh binary;
-    binary.build(prim_boxes, leaf_size, threads);
+    binary.build(prim_boxes, leaf_size, threads, split_above);
     prims_.assign(binary.order().begin(), binary.order().end());
     bounds_ = binary.bounds();
     nodes_.reserve(binary.node_count() / (N - 1) + 1);

@@ -43,7 +43,9 @@ class WideBvh {
     // Subtrees of at most leaf_size primitives become leaves: 4 for a mesh (one
     // Triangle4), 1 for a scene's objects, which are tested one by one.
     // On `threads` threads (0: all the hardware's), the same tree on any number.
-    void build(std::span<const Aabb> prim_boxes, std::uint32_t leaf_size, int threads = 0);
+    // split_above: as Bvh::build's.
+    void build(std::span<const Aabb> prim_boxes, std::uint32_t leaf_size, int threads = 0,
+               std::uint32_t split_above = 0);
 
     bool empty() const { return nodes_.empty(); }
     Aabb bounds() const { return bounds_; }

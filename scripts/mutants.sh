@@ -158,6 +158,16 @@ mutant collapse-gives-the-right-child-one-lane core/wide_bvh.cpp \
     'lanes_of(tree_[index].first, N - split_[index][0], lanes, n);' \
     'lanes_of(tree_[index].first, 1, lanes, n);' \
     rt_tests $(unit '*WideBvh*:*Accel*')
+mutant pair-test-swaps-its-packs core/triangle4.h \
+    '_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis])' \
+    '_mm256_set_m128(a.v[vertex][axis], b.v[vertex][axis])' \
+    rt_tests $(unit 'Triangle4.*')
+mutant leaf-loop-lane-without-its-pack core/mesh.h \
+    'h.lane += static_cast<int>(kTriangle4Lanes * k);' 'h.lane += 0;' \
+    rt_tests $(unit 'Triangle4.*')
+mutant leaf-kept-whole-where-a-split-pays core/bvh.cpp \
+    'Bvh::kKeepLeaf * bounds.box.half_area()' '0.0f * bounds.box.half_area()' \
+    rt_tests $(unit 'Bvh.*')
 mutant bvh-leaf-left-in-scratch core/bvh.cpp \
     'if (r != refs) std::copy(r + begin, r + end, refs + begin);' \
     'if (false) std::copy(r + begin, r + end, refs + begin);' \

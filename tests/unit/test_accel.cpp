@@ -240,6 +240,33 @@ TEST(Bvh, TheTreeIsTheSameOnAnyNumberOfThreads) {
     }
 }
 
+// Leaves of up to eight where split_above is four: a subtree of five to eight is split
+// only where its halves' boxes have much less area between them than it has (two far
+// clusters of four), and kept whole where they overlap (eight boxes in one place).
+TEST(Bvh, ALeafAboveSplitAboveIsSplitOnlyWhereThatPays) {
+    const auto leaf_counts = [](const std::vector<Aabb>& boxes) {
+        Bvh bvh;
+        bvh.build(boxes, 8, 1, 4);
+        std::vector<std::uint32_t> counts;
+        for (const BvhNode& n : bvh.nodes())
+            if (n.is_leaf()) counts.push_back(n.count);
+        std::sort(counts.begin(), counts.end());
+        return counts;
+    };
+    std::vector<Aabb> apart, together;
+    for (int i = 0; i < 8; ++i) {
+        const float x = i < 4 ? 0.0f : 100.0f, d = 0.1f * static_cast<float>(i % 4);
+        apart.push_back({vec3(x + d, d, 0.0f), vec3(x + d + 1.0f, d + 1.0f, 1.0f)});
+        together.push_back({vec3(d, 2.0f * d, 0.0f), vec3(d + 1.0f, 2.0f * d + 1.0f, 1.0f)});
+    }
+    EXPECT_EQ(leaf_counts(apart), (std::vector<std::uint32_t>{4, 4}));
+    EXPECT_EQ(leaf_counts(together), (std::vector<std::uint32_t>{8}));
+    // Without split_above, every subtree of up to eight is a leaf.
+    Bvh whole;
+    whole.build(apart, 8, 1);
+    EXPECT_EQ(whole.node_count(), 1u);
+}
+
 // Both widths of the wide BVH, whichever the build uses by default: every box a ray
 // enters is visited, and closest-hit culling keeps the nearest, on boxes of every
 // shape, flat ones included.
@@ -498,6 +525,91 @@ TEST(Triangle4, AgreesWithTheTutorialsTest) {
         }
     }
     EXPECT_GT(hits, 5000);
+}
+
+#if defined(__AVX__)
+// Two packs tested as one of eight lanes give, lane for lane, what the two tests give one
+// after the other: the same lane (the second pack's as 4-7), t and weights, bit for bit.
+TEST(Triangle4, APairOfPacksIsTheirTwoTestsInOne) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> w(-0.1f, 0.6f);
+    int hits = 0;
+    for (int i = 0; i < 5000; ++i) {
+        Triangle4 packs[2]{};
+        std::array<std::array<vec3, 3>, 8> corners;
+        for (int lane = 0; lane < 8; ++lane) {
+            const vec3 centre = random_point(rng, 1.0f);
+            for (vec3& c : corners[lane]) c = centre + random_point(rng, 0.8f);
+            if (lane == i % 9) continue;  // an empty lane here and there
+            packs[lane / 4].set(lane % 4, corners[lane][0], corners[lane][1], corners[lane][2]);
+        }
+        // Aimed at one of them (or just beside it), from anywhere around.
+        const auto& aim = corners[static_cast<std::size_t>(i % 8)];
+        const vec3 target = aim[0] + w(rng) * (aim[1] - aim[0]) + w(rng) * (aim[2] - aim[0]);
+        const vec3 origin = random_point(rng, 5.0f);
+        const Ray ray{origin, target - origin};
+        const ShearedRay sheared(ray);
+        const float t_max = i % 3 == 0 ? 4.0f : kInfinity;
+        Triangle4Hit one_by_one = intersect(packs[0], sheared, t_max);
+        Triangle4Hit second =
+            intersect(packs[1], sheared, one_by_one.lane >= 0 ? one_by_one.t : t_max);
+        if (second.lane >= 0) one_by_one = second, one_by_one.lane += 4;
+        const Triangle4Hit pair = intersect(packs[0], packs[1], sheared, t_max);
+        ASSERT_EQ(pair.lane, one_by_one.lane) << i;
+        if (pair.lane < 0) continue;
+        ++hits;
+        EXPECT_EQ(pair.t, one_by_one.t) << i;
+        EXPECT_EQ(pair.b1, one_by_one.b1) << i;
+        EXPECT_EQ(pair.b2, one_by_one.b2) << i;
+    }
+    EXPECT_GT(hits, 1000);
+}
+#endif
+
+// A leaf of more than eight (triangles whose boxes are one cube: nothing splits them) is
+// tested four at a time, each hit named by its own lane: the mesh gives every ray the
+// triangle and t that testing each triangle alone gives.
+TEST(Triangle4, ALeafOfMoreThanEightNamesEachTriangle) {
+    TriangleMesh mesh;
+    for (int corner = 0; corner < 8; ++corner)
+        mesh.positions.push_back(
+            {corner & 1 ? 1.0f : -1.0f, corner & 2 ? 1.0f : -1.0f, corner & 4 ? 1.0f : -1.0f});
+    // Every triangle of the cube's corners that spans the cube on all three axes.
+    for (std::uint32_t a = 0; a < 8; ++a)
+        for (std::uint32_t b = a + 1; b < 8; ++b)
+            for (std::uint32_t c = b + 1; c < 8; ++c)
+                if (((a & b & c) | (~a & ~b & ~c)) % 8 == 0 && mesh.triangles.size() < 20)
+                    mesh.triangles.push_back({a, b, c});
+    std::vector<Aabb> boxes(mesh.triangles.size(), Aabb{vec3(-1.0f), vec3(1.0f)});
+    Bvh one_leaf;
+    one_leaf.build(boxes, 8, 1, 4);
+    ASSERT_EQ(one_leaf.node_count(), 1u);
+    ASSERT_GT(mesh.triangles.size(), 8u);
+    mesh.build();
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> w(0.0f, 0.5f);
+    int hits = 0;
+    for (int i = 0; i < 3000; ++i) {  // each aimed at a point of one of them
+        const glm::uvec3 tri = mesh.triangles[static_cast<std::size_t>(i) % mesh.triangles.size()];
+        const vec3 a = mesh.positions[tri[0]], b = mesh.positions[tri[1]],
+                   c = mesh.positions[tri[2]];
+        const vec3 origin = random_point(rng, 3.0f);
+        const Ray ray{origin, a + w(rng) * (b - a) + w(rng) * (c - a) - origin};
+        Hit expected;
+        for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+            Hit h = expected;
+            if (mesh.intersect_triangle(t, ray, h)) expected = h;
+        }
+        Hit got;
+        const bool found = mesh.intersect(ray, got);
+        ASSERT_EQ(found, expected.t < kInfinity) << i;
+        if (!found) continue;
+        ++hits;
+        EXPECT_EQ(got.prim, expected.prim) << i;
+        EXPECT_EQ(got.t, expected.t) << i;
+        EXPECT_EQ(mesh.occluded(ray, kInfinity), true) << i;
+    }
+    EXPECT_GT(hits, 500);
 }
 
 // Rays aimed exactly at the shared edges and vertices of a closed mesh, from inside it,
