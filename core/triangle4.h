@@ -5,7 +5,7 @@
 // ray through a shared edge or vertex of a closed mesh hits at least one of the
 // triangles: nothing leaks. It is the tutorial's test (a plane hit, then three edge
 // values that must share a sign, divided by their sum for the barycentrics) done in the
-// ray's own frame, four triangles a time (core/simd.h).
+// ray's own frame, four triangles a time (core/simd.h), or eight (two packs) under AVX.
 
 #include <cmath>
 #include <cstdint>
