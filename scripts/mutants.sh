@@ -175,6 +175,13 @@ mutant bvh-leaf-left-in-scratch core/bvh.cpp \
 mutant bvh-leaf-order-unsorted core/bvh.cpp \
     'return a.index() < b.index(); });' 'return false; });' \
     rt_tests $(unit 'Bvh.TheTreeIsTheSameOnAnyNumberOfThreads')
+mutant small-node-sort-reverses-negatives core/bvh.cpp \
+    '(bits & 0x80000000u) != 0 ? ~bits : bits | 0x80000000u' \
+    '(bits & 0x80000000u) != 0 ? bits : bits | 0x80000000u' \
+    rt_tests $(unit 'Bvh.*')
+mutant small-node-sort-without-ties core/bvh.cpp \
+    'return std::uint64_t{ordered} << 32 | p.index();' 'return std::uint64_t{ordered} << 32;' \
+    rt_tests $(unit 'Bvh.*')
 mutant spare-pack-lanes-left-as-they-were core/mesh.cpp \
     'for (std::uint32_t i = leaf.count; i % kTriangle4Lanes != 0; ++i) {' \
     'for (std::uint32_t i = leaf.count; false; ++i) {' \

@@ -267,6 +267,25 @@ TEST(Bvh, ALeafAboveSplitAboveIsSplitOnlyWhereThatPays) {
     EXPECT_EQ(whole.node_count(), 1u);
 }
 
+// A small node is split by sorting its centres (as integers made from their bits): the
+// order must be the numbers' order across zero too. Three pairs along x, at -10/-9,
+// -1/+1 (one each side of zero) and 9/10, and leaves of two: each leaf a pair.
+TEST(Bvh, ASmallNodeSortsItsCentresAcrossZero) {
+    std::vector<Aabb> boxes;
+    for (float x : {9.0f, -1.0f, -10.0f, 10.0f, 1.0f, -9.0f})
+        boxes.push_back({vec3(x - 0.25f, -0.25f, -0.25f), vec3(x + 0.25f, 0.25f, 0.25f)});
+    Bvh bvh;
+    bvh.build(boxes, 2, 1);
+    int leaves = 0;
+    for (const BvhNode& n : bvh.nodes()) {
+        if (!n.is_leaf()) continue;
+        ++leaves;
+        EXPECT_EQ(n.count, 2u);
+        EXPECT_LE(n.hi.x - n.lo.x, 2.5f) << "a leaf from " << n.lo.x << " to " << n.hi.x;
+    }
+    EXPECT_EQ(leaves, 3);
+}
+
 // Both widths of the wide BVH, whichever the build uses by default: every box a ray
 // enters is visited, and closest-hit culling keeps the nearest, on boxes of every
 // shape, flat ones included.
