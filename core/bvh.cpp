@@ -41,7 +41,13 @@ struct PrimRef {
     std::uint32_t index() const { return std::bit_cast<std::uint32_t>(lo[3]); }
     int bin() const { return std::bit_cast<int>(hi[3]); }
     void set_bin(int b) { hi[3] = std::bit_cast<float>(b); }
-    Float4 centre2() const { return lo + hi; }  // twice the centre: the halving is left out
+    // Twice the centre (the halving is left out), its fourth lane 0: those of lo and hi
+    // hold integers, tiny floats to the FPU, and arithmetic on them would stall it.
+    Float4 centre2() const {
+        constexpr Mask4 kXyz{-1, -1, -1, 0};
+        return std::bit_cast<Float4>(std::bit_cast<Mask4>(lo) & kXyz) +
+               std::bit_cast<Float4>(std::bit_cast<Mask4>(hi) & kXyz);
+    }
 };
 
 // The primitives of a subtree: their boxes' union and their centres' (doubled) bounds.
@@ -51,59 +57,74 @@ struct Bounds {
 
 struct Split {
     int axis = -1;
-    int bin = 0;                    // bins [0, bin] go left
+    int bin = 0;                    // bins [0, bin] along the axis go left
     std::uint32_t sorted_left = 0;  // if not 0: the range is sorted, its first this many go left
     float cost = kInfinity;
-    Bounds left, right;
+    Bounds left, right;  // a binned split's centres: found by the partition
 };
 
-// Which of the bins along one axis a doubled centre falls in.
+// Which bin a doubled centre falls in along each axis (all in bin 0 along an axis the
+// centres do not spread along), the three packed in a primitive's spare lane so that the
+// partition need not work them out again. Binned along all three axes, or `only` one.
 struct Binner {
-    int axis;
-    float lo, scale;
+    Float4 lo{}, scale{};
+    int only = -1;  // -1: all three
 
-    template <int kAxis>
-    int bin(const PrimRef& p) const {
-        const int b = static_cast<int>((p.lo[kAxis] + p.hi[kAxis] - lo) * scale);
-        return std::clamp(b, 0, kBins - 1);
-    }
-    // f(bin), `bin` binning along the axis named at compile time: a lane read directly,
-    // not by way of memory as a run-time lane index is.
-    template <class F>
-    decltype(auto) along(F&& f) const {
-        switch (axis) {
-            case 0:
-                return f([this](const PrimRef& p) { return bin<0>(p); });
-            case 1:
-                return f([this](const PrimRef& p) { return bin<1>(p); });
-            default:
-                return f([this](const PrimRef& p) { return bin<2>(p); });
+    Binner(const Box4& centres, int only_axis) : lo(centres.lo), only(only_axis) {
+        const Float4 extent = centres.hi - centres.lo;
+        for (int a = 0; a < 3; ++a) {
+            const float s = static_cast<float>(kBins) / extent[a];
+            scale[a] = extent[a] > 0.0f && std::isfinite(s) ? s : 0.0f;
         }
     }
+    Mask4 bins(const Float4& centre2) const {
+        const Mask4 b = __builtin_convertvector((centre2 - lo) * scale, Mask4);
+        return b < 0 ? 0 : (b > kBins - 1 ? kBins - 1 : b);
+    }
+    static int packed(const Mask4& b) { return b[0] | b[1] << 4 | b[2] << 8; }
+    static int along(int packed_bins, int axis) { return (packed_bins >> (4 * axis)) & 15; }
 };
 
-// One pass's bins: the boxes and centre bounds of what fell in each, and how many.
+// One pass's bins along the three axes: the boxes of what fell in each, and how many.
+// (Their centres' bounds are left to the partition: one pair of boxes, not three.)
 struct Bins {
-    std::array<Bounds, kBins> bounds{};
-    std::array<std::uint32_t, kBins> count{};
+    std::array<std::array<Box4, kBins>, 3> box{};
+    std::array<std::array<std::uint32_t, kBins>, 3> count{};
 
-    void add(PrimRef& p, int b) {
-        // The box read before the bin is written into it: a read of all of `hi` just
+    void add(PrimRef& p, const Binner& binner) {
+        // The box read before the bins are written into it: a read of all of `hi` just
         // after a store into its last lane waits until that store has reached the cache.
-        const Float4 lo = p.lo, hi = p.hi, c = lo + hi;
-        bounds[b].box.grow(lo, hi);
-        bounds[b].centres.grow(c, c);
-        ++count[b];
-        p.set_bin(b);
+        const Float4 lo = p.lo, hi = p.hi;
+        const Mask4 b = binner.bins(p.centre2());
+        if (binner.only < 0) {
+            for (int a = 0; a < 3; ++a) {
+                box[a][b[a]].grow(lo, hi);
+                ++count[a][b[a]];
+            }
+        } else {
+            const int a = binner.only;
+            box[a][b[a]].grow(lo, hi);
+            ++count[a][b[a]];
+        }
+        p.set_bin(Binner::packed(b));
     }
     void add(const Bins& other) {
-        for (int b = 0; b < kBins; ++b) {
-            bounds[b].box.grow(other.bounds[b].box);
-            bounds[b].centres.grow(other.bounds[b].centres);
-            count[b] += other.count[b];
-        }
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < kBins; ++b) {
+                box[a][b].grow(other.box[a][b]);
+                count[a][b] += other.count[a][b];
+            }
     }
 };
+
+// Where `left` is set, a box grown by c; the other, by nothing (one comparison each).
+[[gnu::always_inline]] inline void grow_one_of(Box4& on_left, Box4& on_right, bool left,
+                                               const Float4& c) {
+    const Mask4 l = Mask4{} + static_cast<int>(left);
+    const Float4 inf = splat<Float4>(kInfinity), ninf = splat<Float4>(-kInfinity);
+    on_left.grow(l != 0 ? c : inf, l != 0 ? c : ninf);
+    on_right.grow(l != 0 ? inf : c, l != 0 ? ninf : c);
+}
 
 // Builds the subtree of [begin, end) into its own node array. The refs live in two
 // arrays of the same size: a partition moves a node's refs from the one they are in to
@@ -116,6 +137,7 @@ struct Builder {
     static constexpr std::uint32_t kMinPart = 8192;     // primitives a thread bins or moves
     static constexpr std::uint32_t kMinSubtree = 1024;  // a subtree worth a thread of its own
     static constexpr std::uint32_t kSorted = 16;        // nodes this small are split exactly
+    static constexpr std::uint32_t kAllAxes = 4096;     // nodes this small binned along x, y, z
 
     PrimRef* refs;     // where each leaf's refs end up
     PrimRef* scratch;  // as large as refs: the other side of every other partition
@@ -128,31 +150,40 @@ struct Builder {
         return pool ? part_count(end - begin, pool->threads(), kMinPart) : 1;
     }
 
-    // Binned SAH (Wald, "On fast construction of SAH-based BVHs", 2007) along the axis
-    // where the centres spread most: one pass bins them, a sweep finds the cheapest split
-    // and, from the bins, both sides' bounds, so no child needs a pass of its own.
+    // Binned SAH (Wald, "On fast construction of SAH-based BVHs", 2007): one pass bins the
+    // centres, a sweep per axis finds the cheapest split and, from the bins, both sides'
+    // boxes, and the partition their centres' bounds, so no child needs a pass of its own.
+    // Along all three axes in nodes of up to kAllAxes primitives, along the widest above:
+    // near the leaves is where the widest axis is often not the best cut (a height
+    // field's strips, a mesh's thin parts), and the few large nodes at the top, where
+    // every primitive is binned, are where the other two axes would cost most
+    // (docs/BENCHMARKS.md, sixth session).
     Split find_split(std::uint32_t begin, std::uint32_t end, const Bounds& bounds, PrimRef* r) {
         const Float4 extent = bounds.centres.hi - bounds.centres.lo;
-        const int axis = extent[0] >= extent[1] ? (extent[0] >= extent[2] ? 0 : 2)
-                                                : (extent[1] >= extent[2] ? 1 : 2);
-        const float scale = static_cast<float>(kBins) / extent[axis];
-        if (!(extent[axis] > 0.0f) || !std::isfinite(scale)) return {};
-        const Binner binner{axis, bounds.centres.lo[axis], scale};
-        if (end - begin <= kSorted) return sorted_split(begin, end, axis, r);
+        const int widest = extent[0] >= extent[1] ? (extent[0] >= extent[2] ? 0 : 2)
+                                                  : (extent[1] >= extent[2] ? 1 : 2);
+        if (!(extent[widest] > 0.0f)) return {};
+        if (end - begin <= kSorted) return sorted_split(begin, end, widest, r);
+        const Binner binner(bounds.centres, end - begin <= kAllAxes ? -1 : widest);
         Bins bins;
         const int n_parts = parts(begin, end);
-        binner.along([&](auto bin) {
-            if (n_parts == 1) {
-                for (std::uint32_t i = begin; i < end; ++i) bins.add(r[i], bin(r[i]));
-                return;
-            }
+        if (n_parts == 1) {
+            for (std::uint32_t i = begin; i < end; ++i) bins.add(r[i], binner);
+        } else {
             std::vector<Bins> part_bins(static_cast<std::size_t>(n_parts));
             parallel_parts(pool, begin, end, n_parts, [&](int part, std::size_t b, std::size_t e) {
-                for (std::size_t i = b; i < e; ++i) part_bins[part].add(r[i], bin(r[i]));
+                for (std::size_t i = b; i < e; ++i) part_bins[part].add(r[i], binner);
             });
             for (const Bins& p : part_bins) bins.add(p);
-        });
-        return best_split(bins, axis, end - begin);
+        }
+        Split best;
+        for (int axis = 0; axis < 3; ++axis)
+            if (binner.scale[axis] != 0.0f && (binner.only < 0 || binner.only == axis))
+                cheapest_cut(bins, axis, end - begin, best);
+        if (best.axis >= 0)
+            for (int b = 0; b < kBins; ++b)
+                (b <= best.bin ? best.left : best.right).box.grow(bins.box[best.axis][b]);
+        return best;
     }
 
     // Along `axis` by centre, ties by index: an order that depends on the set alone. As an
@@ -200,57 +231,68 @@ struct Builder {
         return best;
     }
 
-    // Sweep from the right for every right side, then from the left.
-    static Split best_split(const Bins& bins, int axis, std::uint32_t total) {
-        std::array<Bounds, kBins> right{};
-        std::array<float, kBins> right_cost{};
-        Bounds acc;
+    // Sweep from the right for every right side's cost, then from the left; `best` kept
+    // unless a cut along `axis` costs less. (Only the cost: the chosen cut's boxes are
+    // grown afterwards, once.)
+    static void cheapest_cut(const Bins& bins, int axis, std::uint32_t total, Split& best) {
+        const auto& box = bins.box[axis];
+        const auto& count = bins.count[axis];
+        std::array<float, kBins> right_cost;
+        Box4 acc;
         std::uint32_t n = 0;
         for (int b = kBins - 1; b > 0; --b) {
-            acc.box.grow(bins.bounds[b].box);
-            acc.centres.grow(bins.bounds[b].centres);
-            n += bins.count[b];
-            right[b] = acc;
-            right_cost[b] = acc.box.half_area() * static_cast<float>(n);
+            acc.grow(box[b]);
+            n += count[b];
+            right_cost[b] = acc.half_area() * static_cast<float>(n);
         }
-        Split best;
-        acc = Bounds{};
+        acc = Box4{};
         n = 0;
         for (int b = 0; b < kBins - 1; ++b) {
-            acc.box.grow(bins.bounds[b].box);
-            acc.centres.grow(bins.bounds[b].centres);
-            n += bins.count[b];
-            const float cost = acc.box.half_area() * static_cast<float>(n) + right_cost[b + 1];
-            if (n > 0 && n < total && cost < best.cost)
-                best = {axis, b, 0, cost, acc, right[b + 1]};
+            acc.grow(box[b]);
+            n += count[b];
+            const float cost = acc.half_area() * static_cast<float>(n) + right_cost[b + 1];
+            if (n > 0 && n < total && cost < best.cost) {
+                best.axis = axis;
+                best.bin = b;
+                best.cost = cost;
+            }
         }
-        return best;
     }
 
     // Moves the refs of bins [0, split.bin] to the front of [begin, end) of the other
-    // array, the rest behind them, and points `r` there; returns where the right side
-    // starts. A sorted small node is split where it lies.
-    std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const Split& split,
-                            PrimRef*& r) {
+    // array, the rest behind them, points `r` there and fills in both sides' centre
+    // bounds; returns where the right side starts. A sorted small node is split where it
+    // lies.
+    std::uint32_t partition(std::uint32_t begin, std::uint32_t end, Split& split, PrimRef*& r) {
         if (split.sorted_left != 0) return begin + split.sorted_left;
         PrimRef* const to = r == refs ? scratch : refs;
-        const std::uint32_t mid =
-            partition(begin, end, r, to, [&](const PrimRef& p) { return p.bin() <= split.bin; });
+        const std::uint32_t mid = partition(
+            begin, end, r, to,
+            [axis = split.axis, bin = split.bin](const PrimRef& p) {
+                return Binner::along(p.bin(), axis) <= bin;
+            },
+            split.left.centres, split.right.centres);
         r = to;
         return mid;
     }
     template <class GoesLeft>
     std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const PrimRef* from,
-                            PrimRef* to, const GoesLeft& goes_left) {
+                            PrimRef* to, const GoesLeft& goes_left, Box4& left_centres,
+                            Box4& right_centres) {
         const int n_parts = parts(begin, end);
         if (n_parts == 1) {  // lefts from the front, rights from the back: no branches to miss
             std::uint32_t left = begin, right = end;
+            Box4 on_left, on_right;  // not the callers': those might alias `to`, so live in memory
             for (std::uint32_t i = begin; i < end; ++i) {
-                const bool l = goes_left(from[i]);
-                to[l ? left : right - 1] = from[i];
+                const PrimRef p = from[i];
+                const bool l = goes_left(p);
+                to[l ? left : right - 1] = p;
+                grow_one_of(on_left, on_right, l, p.centre2());
                 left += l;
                 right -= !l;
             }
+            left_centres = on_left;
+            right_centres = on_right;
             return left;
         }
         // Each part counts its left side; then each writes both sides at its own offsets.
@@ -269,10 +311,22 @@ struct Builder {
             l += lefts[p];
             r += sizes[p] - lefts[p];
         }
+        std::vector<std::array<Box4, 2>> centres(n);  // each part's left and right
         parallel_parts(pool, begin, end, n_parts, [&](int part, std::size_t b, std::size_t e) {
             std::uint32_t left = left_at[part], right = right_at[part];
-            for (std::size_t i = b; i < e; ++i) to[goes_left(from[i]) ? left++ : right++] = from[i];
+            Box4 on_left, on_right;
+            for (std::size_t i = b; i < e; ++i) {
+                const PrimRef p = from[i];
+                const bool l = goes_left(p);
+                to[l ? left++ : right++] = p;
+                grow_one_of(on_left, on_right, l, p.centre2());
+            }
+            centres[part] = {on_left, on_right};
         });
+        for (const auto& c : centres) {
+            left_centres.grow(c[0]);
+            right_centres.grow(c[1]);
+        }
         return mid;
     }
 
@@ -292,7 +346,7 @@ struct Builder {
                       [](const PrimRef& a, const PrimRef& b) { return a.index() < b.index(); });
         };
         if (count <= split_above || depth >= Bvh::kMaxDepth) return leaf();
-        const Split split = find_split(begin, end, bounds, r);
+        Split split = find_split(begin, end, bounds, r);
         if (split.axis < 0) return leaf();  // all centres in one point: nothing separates them
         // The caller tests up to max_leaf at once (a mesh's eight triangles are one test,
         // core/mesh.cpp), so such a subtree is split only where its halves' boxes are much

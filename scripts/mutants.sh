@@ -182,6 +182,24 @@ mutant small-node-sort-reverses-negatives core/bvh.cpp \
 mutant small-node-sort-without-ties core/bvh.cpp \
     'return std::uint64_t{ordered} << 32 | p.index();' 'return std::uint64_t{ordered} << 32;' \
     rt_tests $(unit 'Bvh.*')
+mutant binned-along-the-widest-axis-only core/bvh.cpp \
+    'end - begin <= kAllAxes ? -1 : widest' 'widest' \
+    rt_tests $(unit 'Bvh.*')
+mutant partition-forgets-the-centres core/bvh.cpp \
+    'grow_one_of(on_left, on_right, l, p.centre2());
+                left += l;' 'left += l;' \
+    rt_tests $(unit 'Bvh.*:*Accel*')
+mutant parallel-partition-forgets-the-centres core/bvh.cpp \
+    'grow_one_of(on_left, on_right, l, p.centre2());
+            }' '}' \
+    rt_tests $(unit 'Bvh.*:*Accel*')
+mutant centres-grown-on-the-wrong-side core/bvh.cpp \
+    'on_left.grow(l != 0 ? c : inf, l != 0 ? c : ninf);' \
+    'on_left.grow(l != 0 ? inf : c, l != 0 ? ninf : c);' \
+    rt_tests $(unit 'Bvh.*:*Accel*')
+mutant cut-boxes-split-one-bin-late core/bvh.cpp \
+    '(b <= best.bin ? best.left : best.right)' '(b <= best.bin + 1 ? best.left : best.right)' \
+    rt_tests $(unit 'Bvh.*:*Accel*')
 mutant spare-pack-lanes-left-as-they-were core/mesh.cpp \
     'for (std::uint32_t i = leaf.count; i % kTriangle4Lanes != 0; ++i) {' \
     'for (std::uint32_t i = leaf.count; false; ++i) {' \

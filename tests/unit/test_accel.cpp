@@ -267,6 +267,27 @@ TEST(Bvh, ALeafAboveSplitAboveIsSplitOnlyWhereThatPays) {
     EXPECT_EQ(whole.node_count(), 1u);
 }
 
+// Nodes of up to a few thousand are binned along every axis, not only the one their
+// centres spread most along: two layers of long boxes, the centres spread 20 along x and
+// 10 along y, are best cut between the layers (each side a flat slab), not across x.
+// Then every node below the root keeps to one layer, and leaves stay small.
+TEST(Bvh, ANodeIsCutAlongTheAxisThatCostsLeastNotTheWidest) {
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 200; ++i) {
+        const vec3 c(0.1f * static_cast<float>(i), i % 2 == 0 ? 0.0f : 10.0f, 0.0f);
+        boxes.push_back({c - vec3(10.0f, 0.5f, 0.5f), c + vec3(10.0f, 0.5f, 0.5f)});
+    }
+    for (int threads : {1, 2}) {
+        Bvh bvh;
+        bvh.build(boxes, 4, threads);
+        const auto nodes = bvh.nodes();
+        ASSERT_FALSE(nodes[0].is_leaf());
+        for (const std::uint32_t child : {1u, nodes[0].first})
+            EXPECT_LE(nodes[child].hi.y - nodes[child].lo.y, 1.0f) << "child " << child;
+        for (const BvhNode& n : nodes) EXPECT_LE(n.count, 4u);  // interior nodes: 0
+    }
+}
+
 // A small node is split by sorting its centres (as integers made from their bits): the
 // order must be the numbers' order across zero too. Three pairs along x, at -10/-9,
 // -1/+1 (one each side of zero) and 9/10, and leaves of two: each leaf a pair.
