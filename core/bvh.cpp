@@ -237,25 +237,36 @@ struct Builder {
     static void cheapest_cut(const Bins& bins, int axis, std::uint32_t total, Split& best) {
         const auto& box = bins.box[axis];
         const auto& count = bins.count[axis];
+        // Half the area, without Box4::half_area's test for an empty box: an empty side
+        // (here only where its count is 0) costs NaN or infinity, never the least.
+        const auto area = [](const Box4& b) {
+            const Float4 e = b.hi - b.lo;
+            return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
+        };
         std::array<float, kBins> right_cost;
         Box4 acc;
         std::uint32_t n = 0;
         for (int b = kBins - 1; b > 0; --b) {
             acc.grow(box[b]);
             n += count[b];
-            right_cost[b] = acc.half_area() * static_cast<float>(n);
+            right_cost[b] = area(acc) * static_cast<float>(n);
         }
         acc = Box4{};
         n = 0;
+        float least = best.cost;
+        int at = -1;
         for (int b = 0; b < kBins - 1; ++b) {
             acc.grow(box[b]);
             n += count[b];
-            const float cost = acc.half_area() * static_cast<float>(n) + right_cost[b + 1];
-            if (n > 0 && n < total && cost < best.cost) {
-                best.axis = axis;
-                best.bin = b;
-                best.cost = cost;
-            }
+            const float cost = area(acc) * static_cast<float>(n) + right_cost[b + 1];
+            const bool cheaper = n > 0 && n < total && cost < least;
+            least = cheaper ? cost : least;
+            at = cheaper ? b : at;
+        }
+        if (at >= 0) {
+            best.axis = axis;
+            best.bin = at;
+            best.cost = least;
         }
     }
 
