@@ -65,12 +65,13 @@ int main(int argc, char** argv) {
         ->delimiter(',')
         ->check(CLI::Range(1, 256));
     app.add_flag("--sweep", sweep, "Time per ray against triangle count on a tessellated sphere");
-    app.add_option("--csv", csv, "--sweep: the data");
+    app.add_option("--csv", csv, "--sweep: the data (default sweep.csv, in the current folder)");
     app.add_option("--counts", counts,
                    "--sweep: triangle counts (default 1000,10000,100000,1000000)")
         ->delimiter(',')
         ->check(CLI::Range(8, 50000000));
-    app.add_option("--png", png, "--sweep: the plot (needs gnuplot)");
+    app.add_option("--png", png,
+                   "--sweep: the plot, needs gnuplot (default sweep.png, in the current folder)");
     app.add_flag("--item-buffer", item_buffer, "A Whitted frame with and without the item buffer");
     app.add_flag("--gpu", gpu,
                  "Also the GPU tracer's traversal (an OpenGL 4.3 compute shader) on the same rays");
