@@ -80,7 +80,9 @@ MeshFile load_ply_stl(const std::filesystem::path& path, const MeshFileOptions& 
             hi = glm::max(hi, g.positions[t[k]]);
         }
     data.origin = mesh_origin(options, lo, hi);
-    for (const glm::dvec3& p : g.positions) data.mesh.positions.push_back(vec3(p - data.origin));
+    data.scale = mesh_scale(options, lo, hi);
+    for (const glm::dvec3& p : g.positions)
+        data.mesh.positions.push_back(vec3((p - data.origin) / data.scale));
     data.mesh.triangles = std::move(g.triangles);
     data.mesh.materials.assign(data.mesh.triangles.size(), kNoFileMaterial);
     if (g.any_colours) data.mesh.corner_colours = std::move(g.colours);

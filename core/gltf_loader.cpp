@@ -439,7 +439,9 @@ void GltfReader::finish() {
     }
     const glm::dvec3 centre = positions_.empty() ? glm::dvec3(0.0) : 0.5 * (lo + hi);
     g.origin = mesh_origin(options_, lo, hi);
-    for (const glm::dvec3& p : positions_) g.mesh.positions.push_back(vec3(p - g.origin));
+    g.scale = mesh_scale(options_, lo, hi);
+    const auto stored = [&](const glm::dvec3& p) { return vec3((p - g.origin) / g.scale); };
+    for (const glm::dvec3& p : positions_) g.mesh.positions.push_back(stored(p));
     if (std::find(has_normals_.begin(), has_normals_.end(), true) != has_normals_.end()) {
         for (std::size_t t = 0; t < g.mesh.triangles.size(); ++t) {
             const vec3 face = glm::normalize(g.mesh.face_normal(static_cast<std::uint32_t>(t)));
@@ -454,7 +456,7 @@ void GltfReader::finish() {
     if (any_uvs_) g.mesh.corner_uvs = std::move(uvs_);
     if (any_colours_) g.mesh.corner_colours = std::move(colours_);
     for (std::size_t i = 0; i < scene_.cameras.size(); ++i)
-        scene_.cameras[i].eye = vec3(camera_eyes_[i] - g.origin);
+        scene_.cameras[i].eye = stored(camera_eyes_[i]);
     double brightest = 0.0;
     std::vector<double> strength;
     for (const PendingLight& p : lights_) {
@@ -466,7 +468,7 @@ void GltfReader::finish() {
     }
     for (std::size_t i = 0; i < lights_.size(); ++i) {
         Light l = lights_[i].light;
-        l.position = vec3(lights_[i].position - g.origin);
+        l.position = stored(lights_[i].position);
         l.colour *= brightest > 0.0 ? static_cast<float>(strength[i] / brightest) : 0.0f;
         scene_.lights.push_back(l);
     }

@@ -21,7 +21,7 @@ namespace rt {
 // with +y up.
 struct GltfCamera {
     std::string name;
-    vec3 eye{0.0f};  // relative to MeshFile::origin, like the mesh
+    vec3 eye{0.0f};  // relative to MeshFile::origin, in units of MeshFile::scale, like the mesh
     vec3 forward{0.0f, 0.0f, -1.0f};
     vec3 up{0.0f, 1.0f, 0.0f};
     float yfov_degrees = 40.0f;

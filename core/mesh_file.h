@@ -29,6 +29,10 @@ struct MeshFileOptions {
     double recentre_beyond_sizes = std::numeric_limits<double>::infinity();
     // Or store positions relative to this point (a scene's origin, core/scene_loader.h).
     std::optional<glm::dvec3> origin;
+    // A model whose box's largest side lies outside [kSmallestSize, kLargestSize] is
+    // scaled by a power of two (exact) to a side in [1, 2), MeshFile::scale (a bare
+    // model's own scene only: a scene file places its meshes in its own units).
+    bool rescale = false;
 };
 
 struct MeshFile {
@@ -37,6 +41,7 @@ struct MeshFile {
     std::vector<Texture> textures;
     std::vector<std::string> warnings;  // "FILE: WHERE: WHAT" lines for what was skipped
     glm::dvec3 origin{0.0};             // where the positions' zero is, in the file's coordinates
+    double scale = 1.0;                 // file units per unit of the positions: a power of two
 };
 
 inline constexpr std::uint32_t kNoFileMaterial = 0xffffffffu;
@@ -45,6 +50,18 @@ inline constexpr std::uint32_t kNoFileMaterial = 0xffffffffu;
 // its zero: the origin asked for, else the box's centre if it lies beyond recentre_beyond
 // or beyond recentre_beyond_sizes times the box's largest side, else the file's zero.
 glm::dvec3 mesh_origin(const MeshFileOptions& options, const glm::dvec3& lo, const glm::dvec3& hi);
+
+// Sizes a model keeps as they are (MeshFileOptions::rescale). Below, the ray offsets'
+// absolute step near zero (offset_ray_origin) is large for it and squared lengths
+// underflow; above, products of two coordinates (the triangle test's) and squared
+// lengths overflow. A power of two keeps every float coordinate exact, and every
+// computation's rounding the same relative to the model, so it looks as it would.
+inline constexpr double kSmallestSize = 0x1p-4, kLargestSize = 0x1p24;
+
+// File units per unit of the stored positions (MeshFile::scale): 1, or where
+// options.rescale asks and the box's largest side lies outside [kSmallestSize,
+// kLargestSize], the power of two that brings it into [1, 2).
+double mesh_scale(const MeshFileOptions& options, const glm::dvec3& lo, const glm::dvec3& hi);
 
 // By the file's extension: .obj (core/obj_loader.h), .gltf or .glb (core/gltf_loader.h),
 // .ply or .stl (core/assimp_loader.h).

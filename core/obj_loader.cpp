@@ -59,13 +59,13 @@ std::pair<glm::dvec3, glm::dvec3> used_bounds(const tinyobj::attrib_t& attrib,
     return {lo, hi};
 }
 
-// Positions relative to `origin`, the difference taken in double precision.
+// Positions relative to `origin` in units of `scale`, the arithmetic in double precision.
 void copy_positions(const std::string& file, const tinyobj::attrib_t& attrib,
-                    const glm::dvec3& origin, TriangleMesh& mesh) {
+                    const glm::dvec3& origin, double scale, TriangleMesh& mesh) {
     mesh.positions.resize(attrib.vertices.size() / 3);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         const double* v = &attrib.vertices[3 * i];
-        mesh.positions[i] = vec3(glm::dvec3(v[0], v[1], v[2]) - origin);
+        mesh.positions[i] = vec3((glm::dvec3(v[0], v[1], v[2]) - origin) / scale);
         if (!finite(mesh.positions[i]))
             throw Error(file, "vertex " + std::to_string(i + 1),
                         "coordinate is not a finite number in single precision");
@@ -316,7 +316,8 @@ MeshFile load_obj(const std::filesystem::path& path, const MeshFileOptions& opti
     }
     const auto [lo, hi] = used_bounds(attrib, shapes);
     data.origin = mesh_origin(options, lo, hi);
-    copy_positions(file, attrib, data.origin, data.mesh);
+    data.scale = mesh_scale(options, lo, hi);
+    copy_positions(file, attrib, data.origin, data.scale, data.mesh);
     const bool has_normals = copy_triangles(file, attrib, shapes, data.mesh);
     if (const std::size_t dropped = drop_duplicate_triangles(data.mesh))
         data.warnings.push_back(file + ": warning: " + std::to_string(dropped) +

@@ -423,6 +423,7 @@ LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions&
     MeshFileOptions obj_options;
     obj_options.recentre_beyond = kFarFromOrigin;
     obj_options.recentre_beyond_sizes = kFarForItsSize;
+    obj_options.rescale = true;
     MeshFile obj = load_mesh_file(path, obj_options);  // .obj, .ply or .stl
     for (vec3& p : obj.mesh.positions) p = rotate * p;
     for (vec3& n : obj.mesh.corner_normals) n = rotate * n;
@@ -434,7 +435,8 @@ LoadedScene load_obj_scene(const std::filesystem::path& path, const LoadOptions&
 static LoadedScene bare_mesh_scene(const std::filesystem::path& path, MeshFile mesh) {
     LoadedScene out;
     out.origin = mesh.origin;
-    out.scene.origin = mesh.origin;
+    out.scale = mesh.scale;
+    out.scene.origin = mesh.origin / mesh.scale;  // a checker's squares in the scene's units
     SceneDescription& scene = out.scene;
     scene.materials = material_presets();
     append_textures(mesh, scene);
@@ -455,6 +457,7 @@ LoadedScene load_gltf_scene(const std::filesystem::path& path, const LoadOptions
     MeshFileOptions mesh_options;
     mesh_options.recentre_beyond = kFarFromOrigin;
     mesh_options.recentre_beyond_sizes = kFarForItsSize;
+    mesh_options.rescale = true;
     GltfScene gltf = load_gltf(path, mesh_options);
     std::vector<GltfCamera> cameras = std::move(gltf.cameras);
     std::vector<Light> lights = std::move(gltf.lights);

@@ -18,6 +18,10 @@ struct LoadedScene {
     // Where the scene's zero lies in the file's coordinates: a bare mesh is moved next to
     // the origin (in double precision) so that float keeps its shape and its lighting.
     glm::dvec3 origin{0.0};
+    // File units per scene unit: a bare mesh far smaller or larger than float's arithmetic
+    // handles well is scaled by a power of two (MeshFileOptions::rescale); else 1. A point
+    // p of the scene is origin + scale * p in the file.
+    double scale = 1.0;
 };
 
 // Which of a bare mesh's axes points up: "y" (the default), "z", "x", "-y", "-z", "-x".

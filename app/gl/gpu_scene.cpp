@@ -1,7 +1,9 @@
 #include "app/gl/gpu_scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -24,6 +26,15 @@ namespace {
 // Sphere levels of detail: the first at or above what the sphere's size asks for.
 constexpr int kSphereLevels[] = {12, 16, 24, 32, 48, 64, 96, 128, 192, 256};
 
+// Where the shader's normalize would underflow or overflow (a sliver's cross product),
+// the same direction scaled first; zero stays zero. Other normals go as they are.
+glm::vec3 normalizable(const glm::vec3& n) {
+    const float square = glm::dot(n, n);
+    if (square >= std::numeric_limits<float>::min() && square <= 1e30f) return n;
+    const float largest = std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)});
+    return largest > 0.0f && std::isfinite(largest) ? n / largest : glm::vec3(0.0f);
+}
+
 float max_scale(const glm::mat4& m) {
     return std::max(
         {glm::length(glm::vec3(m[0])), glm::length(glm::vec3(m[1])), glm::length(glm::vec3(m[2]))});
@@ -35,15 +46,21 @@ GpuMesh::GpuMesh(const TriangleMesh& mesh, bool smooth_faces) {
     std::vector<Vertex> vertices;
     vertices.reserve(3 * mesh.triangles.size());
     for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
-        const glm::vec3 face = mesh.face_normal(t);
+        const glm::vec3 face = normalizable(mesh.face_normal(t));
+        // A triangle of no area (its corners on one line as float has them) the tracer
+        // never hits; drawn, rounding in the projection could give it a few fragments
+        // without a normal: NaN pixels. Its corners at one point draw nothing, and the
+        // triangles after it keep their primitive ids (the item buffer's).
+        const bool no_area = face == glm::vec3(0.0f);
         for (int k = 0; k < 3; ++k) {
-            const glm::vec3 n = mesh.corner_normals.empty() ? face : mesh.corner_normals[3 * t + k];
+            const glm::vec3 n =
+                normalizable(mesh.corner_normals.empty() ? face : mesh.corner_normals[3 * t + k]);
             const glm::vec2 uv =
                 mesh.corner_uvs.empty() ? glm::vec2(0.0f) : mesh.corner_uvs[3 * t + k];
             const glm::vec3 colour =
                 mesh.corner_colours.empty() ? glm::vec3(1.0f) : mesh.corner_colours[3 * t + k];
-            vertices.push_back(
-                {mesh.positions[mesh.triangles[t][k]], n, smooth_faces ? n : face, uv, colour});
+            const glm::vec3 p = mesh.positions[mesh.triangles[t][no_area ? 0 : k]];
+            vertices.push_back({p, n, smooth_faces ? n : face, uv, colour});
         }
     }
     upload(vertices);
@@ -115,7 +132,9 @@ const GpuMesh& GpuScene::sphere_level(float radius_pixels) {
 float GpuScene::plane_extent(const Camera& camera) const {
     const float radius = bounds_.empty() ? 1.0f : 0.5f * glm::length(bounds_.extent());
     const glm::vec3 centre = bounds_.empty() ? glm::vec3(0.0f) : bounds_.centre();
-    return 1000.0f * std::max({radius, glm::length(camera.eye - centre), 1e-3f});
+    // The floor only keeps a scene of one point, seen from that point, from a zero range.
+    return 1000.0f *
+           std::max({radius, glm::length(camera.eye - centre), std::numeric_limits<float>::min()});
 }
 
 namespace {
@@ -143,8 +162,13 @@ DepthRange GpuScene::depth_range(const Camera& camera) const {
     for (const Object& o : scene_.objects)
         if (const auto* p = std::get_if<Plane>(&o.shape))
             nearest = std::min(nearest, plane_distance(*p, o, camera.eye));
+    // Capped at the view plane's distance N, as the tutorial's frustum starts there, but
+    // never below a millionth of the far plane: a scene far larger than N, seen from
+    // afar, would otherwise have all its depths round to the far plane's and fail the
+    // depth test (a 24-bit depth buffer tells about 1e6 steps apart).
     const float closest_allowed = std::min(range.far_plane * 1e-6f, camera.N);
-    range.near_plane = std::clamp(0.5f * nearest, closest_allowed, camera.N);
+    const float farthest_allowed = std::max(range.far_plane * 1e-6f, camera.N);
+    range.near_plane = std::clamp(0.5f * nearest, closest_allowed, farthest_allowed);
     return range;
 }
 

@@ -16,41 +16,45 @@ namespace {
 nlohmann::json vec(const vec3& v) { return {v.x, v.y, v.z}; }
 
 // A point in the scene file's coordinates: the loader moved a far scene's centre to the
-// origin (LoadedScene::origin) so that float keeps its precision; it goes back here, in
-// double. Directions and normals need no such care.
-glm::dvec3 in_file(const vec3& p, const glm::dvec3& origin) { return origin + glm::dvec3(p); }
-nlohmann::json point(const vec3& p, const glm::dvec3& origin) {
-    const glm::dvec3 q = in_file(p, origin);
+// origin (LoadedScene::origin) and scaled a bare model of extreme size (LoadedScene::scale)
+// so that float keeps its precision; both go back here, in double. Normals need no such
+// care; a direction is scaled (t, the ray's parameter, is the same in either units).
+glm::dvec3 in_file(const vec3& p, const FileFrame& file) {
+    return file.origin + file.scale * glm::dvec3(p);
+}
+nlohmann::json point(const vec3& p, const FileFrame& file) {
+    const glm::dvec3 q = in_file(p, file);
     return {q.x, q.y, q.z};
 }
+vec3 direction(const vec3& d, const FileFrame& file) { return vec3(file.scale * glm::dvec3(d)); }
 
-nlohmann::json hit_json(const std::optional<RayHitRecord>& h, const glm::dvec3& origin) {
+nlohmann::json hit_json(const std::optional<RayHitRecord>& h, const FileFrame& file) {
     if (!h) return nullptr;
     return {{"object", h->name},
             {"index", h->object},
             {"t", h->t},
-            {"distance", h->distance},
-            {"point", point(h->point, origin)},
+            {"distance", file.scale * h->distance},
+            {"point", point(h->point, file)},
             {"normal", vec(h->normal)}};
 }
 
-nlohmann::json node_json(const RayNode& n, const glm::dvec3& origin) {
+nlohmann::json node_json(const RayNode& n, const FileFrame& file) {
     nlohmann::json j = {{"kind", ray_kind_name(n.kind)},
-                        {"origin", point(n.origin, origin)},
-                        {"direction", vec(n.direction)},
+                        {"origin", point(n.origin, file)},
+                        {"direction", vec(direction(n.direction, file))},
                         {"weight", n.weight}};
     if (n.kind == RayKind::kShadow) {
         j["light"] = n.light;
         j["blocked"] = n.blocked;
-        j["blocker"] = hit_json(n.blocker, origin);
+        j["blocker"] = hit_json(n.blocker, file);
     } else {
-        j["hit"] = hit_json(n.hit, origin);
+        j["hit"] = hit_json(n.hit, file);
         j["colour"] = vec(n.colour);
         j["local"] = vec(n.local);
         if (n.total_internal_reflection) j["total_internal_reflection"] = true;
     }
     j["children"] = nlohmann::json::array();
-    for (const RayNode& c : n.children) j["children"].push_back(node_json(c, origin));
+    for (const RayNode& c : n.children) j["children"].push_back(node_json(c, file));
     return j;
 }
 
@@ -61,8 +65,8 @@ std::string fmt(const vec3& v) {
 }
 
 // A point: as many digits as it takes to tell points 1e-4 apart, far out or not.
-std::string fmt_point(const vec3& p, const glm::dvec3& origin) {
-    const glm::dvec3 q = in_file(p, origin);
+std::string fmt_point(const vec3& p, const FileFrame& file) {
+    const glm::dvec3 q = in_file(p, file);
     const double largest = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z), 1.0});
     const int digits = 4 + static_cast<int>(std::ceil(std::log10(largest)));
     char buf[160];
@@ -70,12 +74,12 @@ std::string fmt_point(const vec3& p, const glm::dvec3& origin) {
     return buf;
 }
 
-void print_node(const Scene& scene, const RayNode& n, int indent, const glm::dvec3& origin) {
+void print_node(const Scene& scene, const RayNode& n, int indent, const FileFrame& file) {
     std::printf("%*s%s", 2 * indent, "", ray_kind_name(n.kind));
     if (n.total_internal_reflection) std::printf(" (total internal reflection)");
     if (n.kind == RayKind::kShadow) {
         const Light& light = scene.lights[static_cast<std::size_t>(n.light)];
-        std::printf(" to light %d at %s: ", n.light, fmt_point(light.position, origin).c_str());
+        std::printf(" to light %d at %s: ", n.light, fmt_point(light.position, file).c_str());
         if (!n.blocked)
             std::printf("clear\n");
         else if (n.blocker)
@@ -84,15 +88,15 @@ void print_node(const Scene& scene, const RayNode& n, int indent, const glm::dve
             std::printf("blocked\n");
         return;
     }
-    std::printf(" from %s dir %s, weight %.4g: ", fmt_point(n.origin, origin).c_str(),
-                fmt(n.direction).c_str(), n.weight);
+    std::printf(" from %s dir %s, weight %.4g: ", fmt_point(n.origin, file).c_str(),
+                fmt(direction(n.direction, file)).c_str(), n.weight);
     if (n.hit)
         std::printf("hit \"%s\" at t=%.4g, point %s, normal %s; local %s, returns %s\n",
-                    n.hit->name.c_str(), n.hit->t, fmt_point(n.hit->point, origin).c_str(),
+                    n.hit->name.c_str(), n.hit->t, fmt_point(n.hit->point, file).c_str(),
                     fmt(n.hit->normal).c_str(), fmt(n.local).c_str(), fmt(n.colour).c_str());
     else
         std::printf("miss, returns the background %s\n", fmt(n.colour).c_str());
-    for (const RayNode& c : n.children) print_node(scene, c, indent + 1, origin);
+    for (const RayNode& c : n.children) print_node(scene, c, indent + 1, file);
 }
 
 }  // namespace
@@ -106,17 +110,16 @@ RayNode trace_pixel_tree(const Scene& scene, const Camera& camera, const TraceOp
     return trace_ray_tree(scene, camera, options, x, camera.rows - 1 - y);
 }
 
-void print_ray_tree(const Scene& scene, const RayNode& root, int x, int y,
-                    const glm::dvec3& origin) {
+void print_ray_tree(const Scene& scene, const RayNode& root, int x, int y, const FileFrame& file) {
     std::printf("pixel %d,%d (from the top left): colour %s, %d bounce%s\n", x, y,
                 fmt(root.colour).c_str(), bounce_depth(root), bounce_depth(root) == 1 ? "" : "s");
-    print_node(scene, root, 1, origin);
+    print_node(scene, root, 1, file);
 }
 
 void write_ray_tree_json(const RayNode& root, int x, int y, const std::string& path,
-                         const glm::dvec3& origin) {
+                         const FileFrame& file) {
     const nlohmann::json j = {
-        {"pixel", {x, y}}, {"colour", vec(root.colour)}, {"ray", node_json(root, origin)}};
+        {"pixel", {x, y}}, {"colour", vec(root.colour)}, {"ray", node_json(root, file)}};
     std::ofstream out(path);
     out << j.dump(2) << '\n';
     if (!out) throw Error(path, "--ray-tree-json", "cannot write the file");

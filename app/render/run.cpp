@@ -325,6 +325,7 @@ int Job::run() {
     if (size) description.camera = description.camera.resized(size->first, size->second);
     stats_["load_seconds"] = watch.lap();
     stats_["origin"] = {loaded_.origin.x, loaded_.origin.y, loaded_.origin.z};
+    stats_["scale"] = loaded_.scale;
     {
         const PhaseLine phase(show_phases, "building the acceleration structures");
         scene_.emplace(std::move(description), o_.accel, o_.light_buffer);
@@ -394,9 +395,9 @@ int Job::ray_tree() {
     if (!parsed)
         throw rt::Error("rtrender", "--ray-tree", "expected X,Y, got \"" + o_.ray_tree + "\"");
     const rt::RayNode root = trace_pixel_tree(*scene_, scene_->camera, o_.trace, x, y);
-    print_ray_tree(*scene_, root, x, y, loaded_.origin);
+    print_ray_tree(*scene_, root, x, y, {loaded_.origin, loaded_.scale});
     if (!o_.ray_tree_json.empty())
-        write_ray_tree_json(root, x, y, o_.ray_tree_json, loaded_.origin);
+        write_ray_tree_json(root, x, y, o_.ray_tree_json, {loaded_.origin, loaded_.scale});
     return 0;
 }
 

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 
+#include "../unit/far_scene.h"
 #include "../unit/test_util.h"
 #include "app/gl/compositor.h"
 #include "app/gl/context.h"
@@ -558,6 +559,32 @@ TEST_P(Gl, FailedConstructionsLeakNoGlNames) {
     }
     EXPECT_EQ(live_names(), before);
     gl::check("FailedConstructionsLeakNoGlNames");
+}
+
+// A bare model far smaller or larger than float handles well is scaled by a power of two
+// (core/mesh_file.h): the raster draws it as at its own size (the bunny 1e15 times its
+// size was an empty raster: every depth rounded to the far plane's). And the bunny 1e6
+// out written with 9 digits, which collapses many of its triangles onto lines: the raster
+// draws none of those (rounding in the projection gave some a few fragments without a
+// normal: NaN pixels).
+TEST_P(Gl, ABareModelRastersAtAnyScaleAndTrianglesWithoutAreaDrawNothing) {
+    const auto dir = test::temp_dir(std::string("scale_") +
+                                    (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
+    const auto raster = [&](const std::string& name, const std::string& text, int cols = 160) {
+        LoadedScene loaded = load_scene(test::write_file(dir / name, text));
+        loaded.scene.camera = loaded.scene.camera.resized(cols, cols * 3 / 4);
+        const Scene scene(std::move(loaded.scene));
+        return gl::RasterRenderer(scene).render(scene.camera);
+    };
+    const Image near = raster("near.obj", test::bunny_obj(1.0, 0.0));
+    for (const double s : {1e-12, 1e15})
+        EXPECT_LE(compare_images(near, raster("scaled.obj", test::bunny_obj(s, 0.0))).share_over,
+                  0.001)
+            << s;
+    const Image far = raster("far.obj", test::bunny_obj(1.0, 1e6, 9), 480);
+    std::size_t non_finite = 0;
+    for (const vec3& p : far.pixels) non_finite += !std::isfinite(p.x + p.y + p.z);
+    EXPECT_EQ(non_finite, 0u);
 }
 
 // An OBJ of lines and points: the raster view draws them (in the material's diffuse

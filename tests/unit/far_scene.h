@@ -4,7 +4,11 @@
 // (tests/unit/test_far.cpp, the GPU tracer's tests).
 #include <array>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <string>
+
+#include "test_util.h"
 
 namespace rt::test {
 
@@ -54,6 +58,30 @@ inline std::string tetra_obj(double o, double s = 1.0) {
         text += "v " + number(s * v[0] + o) + " " + number(s * v[1] + o) + " " +
                 number(s * v[2] + o) + "\n";
     return text + "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
+}
+
+// The Stanford bunny with every coordinate scaled by s, then offset by o, written with
+// `digits` significant digits (17: full precision).
+inline std::string bunny_obj(double s, double o, int digits = 17) {
+    const auto number = [&](double x) {
+        char buffer[64];
+        std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+        return std::string(buffer);
+    };
+    std::ifstream in(source_dir() / "assets/models/stanford-bunny.obj");
+    std::ostringstream out;
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("v ", 0) == 0) {
+            std::istringstream v(line.substr(2));
+            double x, y, z;
+            v >> x >> y >> z;
+            out << "v " << number(s * x + o) << " " << number(s * y + o) << " " << number(s * z + o)
+                << "\n";
+        } else {
+            out << line << "\n";
+        }
+    }
+    return out.str();
 }
 
 }  // namespace rt::test

@@ -129,25 +129,41 @@ TEST(Far, ASmallSceneIsReadRelativeToItsEyeWhereFloatIsCoarseForIt) {
 // The Stanford bunny 1e7 units out: in float its vertices would collapse onto a few
 // points; read relative to its centre in double it is the bunny at the origin.
 TEST(Far, BunnyFarAwayIsTheBunny) {
-    std::ifstream in(test::source_dir() / "assets/models/stanford-bunny.obj");
-    std::ostringstream far;
-    for (std::string line; std::getline(in, line);) {
-        if (line.rfind("v ", 0) == 0) {
-            std::istringstream v(line.substr(2));
-            double x, y, z;
-            v >> x >> y >> z;
-            far << "v " << number(x + 1e7) << " " << number(y + 1e7) << " " << number(z + 1e7)
-                << "\n";
-        } else {
-            far << line << "\n";
-        }
-    }
     const auto dir = test::temp_dir("far_bunny");
-    const auto path = test::write_file(dir / "far.obj", far.str());
+    const auto path = test::write_file(dir / "far.obj", test::bunny_obj(1.0, 1e7));
     const Image near =
         render_file(test::source_dir() / "assets/models/stanford-bunny.obj", nullptr);
     const Image image = render_file(path, nullptr);
     EXPECT_LE(compare_images(near, image).share_over, 0.005);
+}
+
+// The bunny 1e-12, 1e15 and 2^-70 times its size, and 1e-4 times it 1,000 units
+// out, looks as it does. Read as they were, the tiny ones came out empty (the framing's
+// least distance, the ray offsets' absolute step near zero) and the huge ones unlit (each
+// face's cross product squared overflowed: no normals). A bare model that far from a
+// size float handles well is scaled by a power of two.
+TEST(Far, ABareModelLooksTheSameAtAnyScale) {
+    const auto dir = test::temp_dir("far_scale");
+    const auto bunny = test::source_dir() / "assets/models/stanford-bunny.obj";
+    RenderStats near_stats;
+    const Image near = render_file(bunny, &near_stats);
+    EXPECT_EQ(load_scene(bunny).scale, 1.0);
+    for (const auto& [s, o] : {std::pair{1e-12, 0.0}, {1e-4, 1e3}, {1e15, 0.0}, {0x1p-70, 0.0}}) {
+        const auto path =
+            test::write_file(dir / ("bunny" + number(s) + ".obj"), test::bunny_obj(s, o));
+        const LoadedScene loaded = load_scene(path);
+        int exponent = 0;
+        EXPECT_EQ(std::frexp(loaded.scale, &exponent), 0.5) << s << ": a power of two";
+        EXPECT_NE(loaded.scale, 1.0) << s;
+        RenderStats stats;
+        const Image image = render_file(path, &stats);
+        EXPECT_LE(compare_images(near, image).share_over, 0.001) << "scale " << s;
+        EXPECT_EQ(stats.nonfinite_pixels, 0u) << s;
+        EXPECT_NEAR(static_cast<double>(stats.rays.shadow),
+                    static_cast<double>(near_stats.rays.shadow),
+                    0.001 * static_cast<double>(near_stats.rays.shadow))
+            << s << ": lit as at its own size";
+    }
 }
 
 // A NaN or infinite ray enters no box: before the guard, a NaN ray counted as inside
