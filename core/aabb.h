@@ -44,6 +44,11 @@ inline Aabb Aabb::transformed(const glm::mat4& m) const {
     return out;
 }
 
+// A far plane's distance times this is conservative against rounding (Ize, "Robust BVH
+// Ray Traversal", 2013): a ray that grazes a box edge is not lost. The wide BVH puts it
+// into the far planes' inverse directions instead, a multiplication less per node.
+inline constexpr float kSlabExitFactor = 1.00000024f;
+
 // Slab test against a precomputed reciprocal direction; returns the entry distance or
 // +inf when the ray misses the box within (0, t_max). A ray lying in a face's plane
 // (direction 0 there, origin exactly on the face) gives 0 * inf = NaN for that plane;
@@ -59,9 +64,7 @@ inline float slab_entry(const Aabb& box, const vec3& origin, const vec3& inv_dir
         if (near > enter) enter = near;
         if (far < leave) leave = far;
     }
-    // The factor makes the far bound conservative against rounding (Ize, "Robust BVH
-    // Ray Traversal", 2013): a ray that grazes a box edge is not lost.
-    return enter <= leave * 1.00000024f ? enter : kInfinity;
+    return enter <= leave * kSlabExitFactor ? enter : kInfinity;
 }
 
 }  // namespace rt

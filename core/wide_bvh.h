@@ -110,7 +110,8 @@ namespace detail {
 template <int N>
 struct BoxRay {
     using Float = typename Lanes<N>::Float;
-    Float inv[3], origin[3];  // each splat over the lanes
+    Float inv[3], inv_far[3], origin[3];  // each splat over the lanes; inv_far: inv with
+                                          // Ize's factor, so grazing rays are not lost
     int near[3], far[3];
 
     explicit BoxRay(const Ray& ray) {
@@ -120,6 +121,7 @@ struct BoxRay {
         for (int a = 0; a < 3; ++a) {
             const float inv_a = 1.0f / dir[a];
             inv[a] = splat<Float>(inv_a);
+            inv_far[a] = splat<Float>(inv_a * kSlabExitFactor);
             origin[a] = splat<Float>(from[a]);
             near[a] = inv_a < 0.0f ? a + 3 : a;
             far[a] = inv_a < 0.0f ? a : a + 3;
@@ -130,12 +132,13 @@ struct BoxRay {
         // (plane - origin) * inv, not plane * inv - origin * inv: one rounding, as Ize's
         // bound assumes; the second form loses rays at shared box faces.
         const auto plane = [&](int index, int a) { return (n.bounds[index] - origin[a]) * inv[a]; };
+        const auto far_plane = [&](int index, int a) {
+            return (n.bounds[index] - origin[a]) * inv_far[a];
+        };
         t_enter = vmax(vmax(plane(near[0], 0), plane(near[1], 1)),
                        vmax(plane(near[2], 2), splat<Float>(0.0f)));
-        // Ize's factor, as in slab_entry (core/aabb.h): grazing rays are not lost.
-        const Float t_leave = vmin(vmin(plane(far[0], 0), plane(far[1], 1)),
-                                   vmin(plane(far[2], 2), splat<Float>(t_max))) *
-                              1.00000024f;
+        const Float t_leave = vmin(vmin(far_plane(far[0], 0), far_plane(far[1], 1)),
+                                   vmin(far_plane(far[2], 2), splat<Float>(t_max)));
         return bits(t_enter <= t_leave);
     }
 };

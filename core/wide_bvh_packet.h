@@ -29,9 +29,11 @@ struct PacketBoxes {
     // The interval over the rays, each splat over the children: the origin a near plane
     // is measured from (the largest coordinate where the rays go up the axis, else the
     // smallest), the one a far plane is, and the inverse directions' range.
-    Float entry_origin[3], exit_origin[3], inv_lo[3], inv_hi[3];
+    // exit_inv_lo, exit_inv_hi: the same range of the far planes' inverses (Ize's factor in
+    // them, as in BoxRay).
+    Float entry_origin[3], exit_origin[3], inv_lo[3], inv_hi[3], exit_inv_lo[3], exit_inv_hi[3];
     // The rays themselves, a lane each, for each ray's own test.
-    Float inv[3], origin[3];
+    Float inv[3], inv_far[3], origin[3];
     int near[3], far[3];
     bool one_origin = true;  // the rays share their origin (a camera's): the interval is tight
 
@@ -60,6 +62,7 @@ struct PacketBoxes {
                 origin[a][lane] = r.origin[a];
             }
             inv[a] = 1.0f / d;  // lane by lane the single ray's 1.0f / dir (IEEE division)
+            inv_far[a] = inv[a] * kSlabExitFactor;
             const unsigned up = bits(d > 0.0f), down = bits(d < 0.0f);
             if ((up != kAll && down != kAll) ||
                 bits(vabs(inv[a]) < splat<Float>(kInfinity)) != kAll)
@@ -71,6 +74,9 @@ struct PacketBoxes {
             exit_origin[a] = splat<Float>(positive ? o_lo : o_hi);
             inv_lo[a] = splat<Float>(lowest(inv[a]));
             inv_hi[a] = splat<Float>(highest(inv[a]));
+            // Multiplying by the factor keeps the order, so these bound every ray's inv_far.
+            exit_inv_lo[a] = splat<Float>(lowest(inv[a]) * kSlabExitFactor);
+            exit_inv_hi[a] = splat<Float>(highest(inv[a]) * kSlabExitFactor);
             near[a] = positive ? a : a + 3;
             far[a] = positive ? a + 3 : a;
         }
@@ -92,11 +98,10 @@ struct PacketBoxes {
         };
         const auto exit = [&](int a) {
             const Float d = n.bounds[far[a]] - exit_origin[a];
-            return d * (d >= zero ? inv_hi[a] : inv_lo[a]);
+            return d * (d >= zero ? exit_inv_hi[a] : exit_inv_lo[a]);
         };
         t_enter = vmax(vmax(entry(0), entry(1)), vmax(entry(2), zero));
-        const Float t_leave =
-            vmin(vmin(exit(0), exit(1)), vmin(exit(2), splat<Float>(t_max))) * 1.00000024f;
+        const Float t_leave = vmin(vmin(exit(0), exit(1)), vmin(exit(2), splat<Float>(t_max)));
         return bits(t_enter <= t_leave);
     }
 
@@ -104,14 +109,13 @@ struct PacketBoxes {
     // ray's test (BoxRay::test), with the rays as the lanes.
     [[gnu::always_inline]] unsigned rays_entering(const WideBvhNode<N>& n, int lane,
                                                   const Float& t_max) const {
-        const auto plane = [&](int index, int a) {
-            return (splat<Float>(n.bounds[index][lane]) - origin[a]) * inv[a];
+        const auto plane = [&](int index, int a, const Float* inverse) {
+            return (splat<Float>(n.bounds[index][lane]) - origin[a]) * inverse[a];
         };
-        const Float t_enter = vmax(vmax(plane(near[0], 0), plane(near[1], 1)),
-                                   vmax(plane(near[2], 2), splat<Float>(0.0f)));
-        const Float t_leave =
-            vmin(vmin(plane(far[0], 0), plane(far[1], 1)), vmin(plane(far[2], 2), t_max)) *
-            1.00000024f;
+        const Float t_enter = vmax(vmax(plane(near[0], 0, inv), plane(near[1], 1, inv)),
+                                   vmax(plane(near[2], 2, inv), splat<Float>(0.0f)));
+        const Float t_leave = vmin(vmin(plane(far[0], 0, inv_far), plane(far[1], 1, inv_far)),
+                                   vmin(plane(far[2], 2, inv_far), t_max));
         return bits(t_enter <= t_leave);
     }
 };

@@ -281,6 +281,9 @@ mutant tile-rays-off-centre core/renderer.cpp \
 mutant packet-interval-takes-one-inverse core/wide_bvh_packet.h \
     'return d * (d >= zero ? inv_lo[a] : inv_hi[a]);' 'return d * inv_hi[a];' \
     rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant box-exit-without-ize-factor core/wide_bvh.h \
+    'inv_far[a] = splat<Float>(inv_a * kSlabExitFactor);' 'inv_far[a] = splat<Float>(inv_a);' \
+    rt_tests $(unit 'Watertight.*')
 mutant packet-triangles-error-bound-unscaled core/triangle_packet.h \
     't_det_error(o, r.abs_sz)' 't_det_error(o, splat<Float>(1.0f))' \
     rt_tests $(unit 'TrianglePacket.*')
