@@ -22,14 +22,18 @@ glm::dvec3 mesh_origin(const MeshFileOptions& options, const glm::dvec3& lo, con
     return far > options.recentre_beyond || small_for_its_place ? centre : glm::dvec3(0.0);
 }
 
-double mesh_scale(const MeshFileOptions& options, const glm::dvec3& lo, const glm::dvec3& hi) {
-    const glm::dvec3 side = hi - lo;
-    const double size = std::max({side.x, side.y, side.z});
-    if (!options.rescale || !(size > 0.0) || !std::isfinite(size)) return 1.0;
+double power_of_two_unit(double size) {
+    if (!(size > 0.0) || !std::isfinite(size)) return 1.0;
     if (size >= kSmallestSize && size <= kLargestSize) return 1.0;
     int exponent = 0;
     std::frexp(size, &exponent);  // size = m 2^exponent, m in [0.5, 1)
     return std::ldexp(1.0, exponent - 1);
+}
+
+double mesh_scale(const MeshFileOptions& options, const glm::dvec3& lo, const glm::dvec3& hi) {
+    if (options.scale) return *options.scale;
+    const glm::dvec3 side = hi - lo;
+    return options.rescale ? power_of_two_unit(std::max({side.x, side.y, side.z})) : 1.0;
 }
 
 MeshFile load_mesh_file(const std::filesystem::path& path, const MeshFileOptions& options) {

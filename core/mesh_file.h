@@ -31,8 +31,10 @@ struct MeshFileOptions {
     std::optional<glm::dvec3> origin;
     // A model whose box's largest side lies outside [kSmallestSize, kLargestSize] is
     // scaled by a power of two (exact) to a side in [1, 2), MeshFile::scale (a bare
-    // model's own scene only: a scene file places its meshes in its own units).
+    // model's own scene only).
     bool rescale = false;
+    // Or store positions in units of this (a scene's scale, core/scene_loader.h).
+    std::optional<double> scale;
 };
 
 struct MeshFile {
@@ -58,9 +60,13 @@ glm::dvec3 mesh_origin(const MeshFileOptions& options, const glm::dvec3& lo, con
 // computation's rounding the same relative to the model, so it looks as it would.
 inline constexpr double kSmallestSize = 0x1p-4, kLargestSize = 0x1p24;
 
-// File units per unit of the stored positions (MeshFile::scale): 1, or where
-// options.rescale asks and the box's largest side lies outside [kSmallestSize,
-// kLargestSize], the power of two that brings it into [1, 2).
+// The unit in which something `size` wide is stored: 1 where size lies within
+// [kSmallestSize, kLargestSize] (or is 0 or not finite), else the power of two that
+// brings it into [1, 2).
+double power_of_two_unit(double size);
+
+// File units per unit of the stored positions (MeshFile::scale): options.scale if given;
+// else, where options.rescale asks, power_of_two_unit of the box's largest side; else 1.
 double mesh_scale(const MeshFileOptions& options, const glm::dvec3& lo, const glm::dvec3& hi);
 
 // By the file's extension: .obj (core/obj_loader.h), .gltf or .glb (core/gltf_loader.h),

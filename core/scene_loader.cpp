@@ -60,8 +60,12 @@ class JsonSceneReader {
             size = glm::length(look_at->dvector3() - eye);
         if (far_from_origin(eye) || (size > 0.0 && farthest(eye) > kFarForItsSize * size))
             origin_ = eye;
+        // A scene whose camera looks a distance float's arithmetic handles badly (core/
+        // mesh_file.h) is read in units of a power of two, as a bare model is.
+        unit_ = power_of_two_unit(size);
         out_.origin = origin_;
-        scene_.origin = origin_;
+        out_.scale = unit_;
+        scene_.origin = origin_ / unit_;
         read_materials(root.find("materials"));
         if (const auto bg = root.find("background")) scene_.background = bg->colour();
         if (const auto amb = root.find("ambient")) scene_.ambient = amb->colour();
@@ -85,8 +89,8 @@ class JsonSceneReader {
     std::uint32_t material_index(const JsonValue& j) const;
     void read_object(const JsonValue& j);
     Shape read_mesh(const JsonValue& j, glm::dmat4& normalize);
-    // A position in world coordinates, relative to the scene's origin.
-    vec3 point(const JsonValue& j) const { return vec3(j.dvector3() - origin_); }
+    // A position in world coordinates, relative to the scene's origin, in its unit.
+    vec3 point(const JsonValue& j) const { return vec3((j.dvector3() - origin_) / unit_); }
     // The mesh of a file, read once per file and placement: `in_world` reads it
     // relative to the scene's origin (an untransformed mesh's coordinates are the world's).
     std::uint32_t load_mesh(const JsonValue& file_value, bool in_world);
@@ -98,6 +102,7 @@ class JsonSceneReader {
     std::map<std::string, std::uint32_t> material_names_;
     std::map<std::pair<std::filesystem::path, bool>, std::uint32_t> mesh_cache_;
     glm::dvec3 origin_{0.0};  // the file's coordinates of the scene's zero
+    double unit_ = 1.0;       // file units per scene unit (LoadedScene::scale)
 };
 
 vec3 unit_vector(const JsonValue& j) {
@@ -197,8 +202,9 @@ Material JsonSceneReader::read_material(const JsonValue& j, Material m) const {
     if (const auto c = j.find("checker")) {
         c->keys({"colors", "scale"});
         const auto colours = (*c)["colors"].elements(2, 2);
-        m.checker = Checker{colours[0].colour(), colours[1].colour(),
-                            c->has("scale") ? (*c)["scale"].number_above(0.0f) : 1.0f};
+        const double scale = c->has("scale") ? (*c)["scale"].number_above(0.0f) : 1.0f;
+        m.checker =
+            Checker{colours[0].colour(), colours[1].colour(), static_cast<float>(scale / unit_)};
     }
     return m;
 }
@@ -252,19 +258,26 @@ glm::dmat4 read_transform(const JsonValue& j) {
 void JsonSceneReader::read_object(const JsonValue& j) {
     const std::string type = j["type"].string();
     Object o;
-    glm::dmat4 pre(1.0);  // applied before the object's own transform (mesh normalisation)
+    // Applied before the object's own transform: a mesh's normalisation, else the unit
+    // (the shape's coordinates were divided by it, the transform expects the file's).
+    glm::dmat4 pre = glm::scale(glm::dmat4(1.0), glm::dvec3(unit_));
     // A shape with a transform is given in its own coordinates, which the transform
     // places; one without is given in world coordinates, taken relative to the origin.
     // A mesh that is moved (a transform, or normalize) is placed by its transform; one
     // that is not has its file read relative to the origin, in double precision.
     const bool placed =
         j.has("transform") || (type == "mesh" && j.has("normalize") && j["normalize"].boolean());
-    const auto position = [&](const JsonValue& v) { return placed ? v.vector3() : point(v); };
+    // Every length is read in the scene's unit (unit_), a shape's own coordinates too,
+    // so that the transform's linear part stays as the file gives it.
+    const auto position = [&](const JsonValue& v) {
+        return placed ? vec3(v.dvector3() / unit_) : point(v);
+    };
     if (type == "sphere") {
         j.keys({"type", "name", "material", "transform", "center", "radius"});
-        o.shape = Sphere{
-            j.has("center") ? position(j["center"]) : vec3(placed ? glm::dvec3(0.0) : -origin_),
-            j.has("radius") ? j["radius"].number_above(0.0f) : 1.0f};
+        const double radius = j.has("radius") ? j["radius"].number_above(0.0f) : 1.0f;
+        o.shape = Sphere{j.has("center") ? position(j["center"])
+                                         : vec3(placed ? glm::dvec3(0.0) : -origin_ / unit_),
+                         static_cast<float>(radius / unit_)};
     } else if (type == "plane") {
         j.keys({"type", "name", "material", "transform", "normal", "offset", "point"});
         const vec3 n = unit_vector(j["normal"]);
@@ -274,7 +287,7 @@ void JsonSceneReader::read_object(const JsonValue& j) {
         const double offset = j.has("point")
                                   ? glm::dot(j["point"].dvector3(), glm::dvec3(n))
                                   : (j.has("offset") ? j["offset"].number_double() : 0.0);
-        o.shape = Plane{n, static_cast<float>(offset - glm::dot(shift, glm::dvec3(n)))};
+        o.shape = Plane{n, static_cast<float>((offset - glm::dot(shift, glm::dvec3(n))) / unit_)};
     } else if (type == "triangle") {
         j.keys({"type", "name", "material", "transform", "vertices"});
         const auto v = j["vertices"].elements(3, 3);
@@ -294,8 +307,9 @@ void JsonSceneReader::read_object(const JsonValue& j) {
     o.material = j.has("material") ? material_index(j["material"]) : material_names_.at("default");
     const glm::dmat4 placement =
         (j.has("transform") ? read_transform(j["transform"]) : glm::dmat4(1.0)) * pre;
-    const glm::mat4 m =
-        placed ? glm::mat4(glm::translate(glm::dmat4(1.0), -origin_) * placement) : glm::mat4(1.0f);
+    const glm::mat4 m = placed ? glm::mat4(glm::scale(glm::dmat4(1.0), glm::dvec3(1.0 / unit_)) *
+                                           glm::translate(glm::dmat4(1.0), -origin_) * placement)
+                               : glm::mat4(1.0f);
     if (m != glm::mat4(1.0f)) {
         o.transform = Transform::from_matrix(m);
         if (!o.transform)
@@ -331,6 +345,7 @@ std::uint32_t JsonSceneReader::load_mesh(const JsonValue& file_value, bool in_wo
         file_value.fail("cannot open mesh file \"" + mesh_path.string() + "\"");
     MeshFileOptions options;
     if (key.second) options.origin = origin_;
+    options.scale = unit_;
     MeshFile obj = load_mesh_file(mesh_path, options);
     const auto first_material = static_cast<std::uint32_t>(scene_.materials.size());
     append_textures(obj, scene_);

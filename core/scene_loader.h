@@ -18,9 +18,9 @@ struct LoadedScene {
     // Where the scene's zero lies in the file's coordinates: a bare mesh is moved next to
     // the origin (in double precision) so that float keeps its shape and its lighting.
     glm::dvec3 origin{0.0};
-    // File units per scene unit: a bare mesh far smaller or larger than float's arithmetic
-    // handles well is scaled by a power of two (MeshFileOptions::rescale); else 1. A point
-    // p of the scene is origin + scale * p in the file.
+    // File units per scene unit: a scene far smaller or larger than float's arithmetic
+    // handles well is read in a power-of-two unit (power_of_two_unit, core/mesh_file.h);
+    // else 1. A point p of the scene is origin + scale * p in the file.
     double scale = 1.0;
 };
 
