@@ -68,5 +68,26 @@ else
     fail "far scene: $(cat "$out/far.txt")"
 fi
 
+# A scene a billionth of a unit across: read in a power-of-two unit of its own; the tree's
+# points and distances are printed in the file's.
+cat >"$out/tiny.json" <<'JSON'
+{ "camera": { "eye": [0, 0, 6e-9], "look_at": [0, 0, 0], "fov": 40 },
+  "resolution": [64, 48],
+  "lights": [ { "type": "point", "position": [3e-9, 5e-9, 4e-9] } ],
+  "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1e-9 } ] }
+JSON
+if "$rtrender" "$out/tiny.json" --ray-tree 32,24 --ray-tree-json "$out/tiny_tree.json" >"$out/tiny.txt" 2>&1; then
+    python3 - "$out/tiny_tree.json" <<'PY' || fail "tiny scene: not in the file's units: $(cat "$out/tiny.txt")"
+import json, math, sys
+r = json.load(open(sys.argv[1]))["ray"]
+assert all(abs(a - b) < 1e-15 for a, b in zip(r["origin"], [0, 0, 6e-9])), r["origin"]
+h = r["hit"]
+assert abs(math.dist(h["point"], [0, 0, 0]) - 1e-9) < 1e-12, h["point"]
+assert abs(h["distance"] - 5e-9) < 1e-10, h["distance"]
+PY
+else
+    fail "tiny scene: $(cat "$out/tiny.txt")"
+fi
+
 echo "ray tree: $failures failures"
 [ "$failures" -eq 0 ]
