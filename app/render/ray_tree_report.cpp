@@ -16,9 +16,10 @@ namespace {
 nlohmann::json vec(const vec3& v) { return {v.x, v.y, v.z}; }
 
 // A point in the scene file's coordinates: the loader moved a far scene's centre to the
-// origin (LoadedScene::origin) and scaled a bare model of extreme size (LoadedScene::scale)
-// so that float keeps its precision; both go back here, in double. Normals need no such
-// care; a direction is scaled (t, the ray's parameter, is the same in either units).
+// origin (LoadedScene::origin) and read a scene of extreme size in a unit of its own
+// (LoadedScene::scale) so that float keeps its precision; both go back here, in double.
+// Normals need no such care; a direction is scaled (t, the ray's parameter, is the same
+// in either unit).
 glm::dvec3 in_file(const vec3& p, const FileFrame& file) {
     return file.origin + file.scale * glm::dvec3(p);
 }
