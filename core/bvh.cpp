@@ -437,7 +437,9 @@ void Bvh::build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf, int th
     builder.build(0, 0, count, bounds, 0, refs.data());
     nodes_ = std::move(builder.nodes);
     prims_.resize(refs.size());
-    for (std::size_t s = 0; s < refs.size(); ++s) prims_[s] = refs[s].index();
+    parallel_parts(workers, 0, count, n_parts, [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t s = begin; s < end; ++s) prims_[s] = refs[s].index();
+    });
     // Which primitives share a node depends on the set alone (bins and the small nodes'
     // sort do not see the order); in a leaf, the order is by index (sorted as each leaf
     // was made). So the tree, slots included, is the same however the partitions ordered

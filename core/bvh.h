@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "core/aabb.h"
@@ -44,6 +45,8 @@ class Bvh {
     std::span<const BvhNode> nodes() const { return nodes_; }  // root first, depth-first
     // The primitives in leaf order: slot s of the traversal is primitive order()[s].
     std::span<const std::uint32_t> order() const { return prims_; }
+    // The same, moved out (the tree is left without its slots: for a wide BVH's build).
+    std::vector<std::uint32_t> take_order() { return std::move(prims_); }
 
     // Visits the primitives whose boxes the ray enters within (0, t_max), nearest box
     // first. `hit(slot, t_max)` tests the primitive in that slot of order() and returns

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <numeric>
 #include <optional>
@@ -24,14 +25,30 @@ constexpr std::uint32_t kWideLeaf = kBvhWidth;
 }  // namespace
 
 void TriangleMesh::build(AccelKind kind, int threads) {
-    std::vector<Aabb> boxes(triangles.size());
+    threads = build_threads(threads);
+    TaskPool* const pool = threads > 1 ? &TaskPool::shared(threads) : nullptr;
+    // The triangles' boxes, in parallel: on one thread they were 5 ms of a million-triangle
+    // build on two (docs/BENCHMARKS.md, eighth session).
+    // Allocated, not constructed: each box is constructed by the part that computes it
+    // (a constructed array would be written first, and its pages faulted, on one thread).
+    const std::size_t n = triangles.size();
+    std::allocator<Aabb> alloc;
+    const auto free = [&alloc, n](Aabb* p) { alloc.deallocate(p, n); };
+    const std::unique_ptr<Aabb[], decltype(free)> boxes(alloc.allocate(n), free);
+    const int box_parts = pool ? part_count(n, threads, 16384) : 1;
+    std::vector<Aabb> part_bounds(static_cast<std::size_t>(box_parts));
+    parallel_parts(pool, 0, n, box_parts, [&](int part, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            Aabb box;
+            for (int k = 0; k < 3; ++k) box.grow(positions[triangles[i][k]]);
+            std::construct_at(&boxes[i], box);
+            part_bounds[part].grow(box);
+        }
+    });
     bounds_ = Aabb{};
-    for (std::size_t i = 0; i < triangles.size(); ++i) {
-        for (int k = 0; k < 3; ++k) boxes[i].grow(positions[triangles[i][k]]);
-        bounds_.grow(boxes[i]);
-    }
-    accel_.build(boxes, kind, kind == AccelKind::kBvh ? kWideLeaf : kTriangle4Lanes, threads,
-                 kTriangle4Lanes);
+    for (const Aabb& b : part_bounds) bounds_.grow(b);
+    accel_.build(std::span<const Aabb>(boxes.get(), n), kind,
+                 kind == AccelKind::kBvh ? kWideLeaf : kTriangle4Lanes, threads, kTriangle4Lanes);
     // Each leaf's first pack (a pass over the leaves), then the packs filled in parallel.
     const auto order = accel_.order();
     struct Leaf {
@@ -70,14 +87,10 @@ void TriangleMesh::build(AccelKind kind, int threads) {
             }
         }
     };
-    prim_lane_.assign(triangles.size(), 0);
-    threads = build_threads(threads);
-    const int parts = part_count(leaves.size(), threads, 4096);
-    if (parts > 1) {
-        parallel_parts(&TaskPool::shared(threads), 0, leaves.size(), parts, fill);
-    } else {
-        fill(0, 0, leaves.size());
-    }
+    prim_lane_.clear();  // every triangle is in one leaf: each entry written by fill
+    prim_lane_.resize(triangles.size());
+    parallel_parts(pool, 0, leaves.size(), pool ? part_count(leaves.size(), threads, 4096) : 1,
+                   fill);
     leaves_are_packs_ = accel_.relabel_leaves(
         [&](std::uint32_t first, std::uint32_t) { return leaf_pack_[first]; });
 }

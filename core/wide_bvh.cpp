@@ -141,7 +141,7 @@ void WideBvh<N>::build(std::span<const Aabb> prim_boxes, std::uint32_t leaf_size
     leaf_size = std::max(1u, leaf_size);
     Bvh binary;
     binary.build(prim_boxes, leaf_size, threads, split_above);
-    prims_.assign(binary.order().begin(), binary.order().end());
+    prims_ = binary.take_order();
     bounds_ = binary.bounds();
     nodes_.reserve(binary.node_count() / (N - 1) + 1);
     Collapser<N>(binary.nodes(), nodes_).collapse(0);
