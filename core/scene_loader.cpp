@@ -44,8 +44,14 @@ bool far_from_origin(const glm::dvec3& p) { return farthest(p) > kFarFromOrigin;
 // Walks one JSON scene into a SceneDescription, keeping the names and caches that loading needs.
 class JsonSceneReader {
   public:
-    JsonSceneReader(std::filesystem::path path, LoadedScene& out)
-        : path_(std::move(path)), file_(path_.string()), out_(out), scene_(out.scene) {}
+    // `size`: the scene's size in file units where its camera does not say it (one given
+    // by u, v and n has no point it looks at), else 0.
+    JsonSceneReader(std::filesystem::path path, LoadedScene& out, double size = 0.0)
+        : path_(std::move(path)),
+          file_(path_.string()),
+          out_(out),
+          scene_(out.scene),
+          size_(size) {}
 
     void read(const nlohmann::json& doc) {
         const JsonValue root(doc, "", file_);
@@ -55,7 +61,7 @@ class JsonSceneReader {
         // so that float's precision follows the eye (what the rays and the raster see).
         const JsonValue camera = root["camera"];
         const glm::dvec3 eye = camera["eye"].dvector3();
-        double size = 0.0;  // how far the camera looks: the scene's scale, where it says
+        double size = size_;  // how far the camera looks: the scene's scale, where it says
         if (const auto look_at = camera.find("look_at"))
             size = glm::length(look_at->dvector3() - eye);
         if (far_from_origin(eye) || (size > 0.0 && farthest(eye) > kFarForItsSize * size))
@@ -103,6 +109,7 @@ class JsonSceneReader {
     std::map<std::pair<std::filesystem::path, bool>, std::uint32_t> mesh_cache_;
     glm::dvec3 origin_{0.0};  // the file's coordinates of the scene's zero
     double unit_ = 1.0;       // file units per scene unit (LoadedScene::scale)
+    double size_ = 0.0;
 };
 
 vec3 unit_vector(const JsonValue& j) {
@@ -388,11 +395,45 @@ std::vector<Material> material_presets() {
     return {standard, matte, mirror, glass};
 }
 
+namespace {
+
+// The largest side of the box around a scene's eye, point lights and bounded objects (in
+// its own units; planes and directional lights have no place).
+double content_size(const SceneDescription& scene) {
+    Aabb box;
+    box.grow(scene.camera.eye);
+    for (const Light& l : scene.lights)
+        if (l.type == Light::Type::kPoint) box.grow(l.position);
+    for (const Object& o : scene.objects) {
+        const Aabb b =
+            std::visit(Overloaded{[&](const MeshRef& m) { return bounds_of(scene.meshes[m.mesh]); },
+                                  [](const auto& shape) { return Aabb(shape.bounds()); }},
+                       o.shape);
+        if (!b.empty()) box.grow(o.transform ? b.transformed(o.transform->m) : b);
+    }
+    const vec3 side = box.extent();
+    return std::max({side.x, side.y, side.z});
+}
+
+}  // namespace
+
 LoadedScene load_json_scene(const std::filesystem::path& path) {
     const nlohmann::json doc = parse_json_file(path);
     LoadedScene out;
     JsonSceneReader(path, out).read(doc);
-    return out;
+    // A camera given by u, v and n does not say how large the scene is: where what the
+    // first reading holds is of a size float handles badly, or lies far away for its
+    // size, the file is read again knowing its size (its unit and origin follow from it,
+    // as from a look_at camera's distance).
+    if (doc.at("camera").contains("look_at")) return out;  // read() checked the camera
+    const double size = content_size(out.scene) * out.scale;
+    const glm::dvec3 eye = out.origin + glm::dvec3(out.scene.camera.eye) * out.scale;
+    const bool far =
+        out.origin == glm::dvec3(0.0) && size > 0.0 && farthest(eye) > kFarForItsSize * size;
+    if (power_of_two_unit(size) == 1.0 && !far) return out;
+    LoadedScene again;
+    JsonSceneReader(path, again, size).read(doc);
+    return again;
 }
 
 void frame_bounds(SceneDescription& scene, const Aabb& bounds, int cols, int rows) {

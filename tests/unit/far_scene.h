@@ -24,11 +24,14 @@ inline std::string point(double o, double x, double y, double z, double s = 1.0)
 
 // A mirror ball and a stretched ball over a checker floor, a triangle, one light: every
 // kind of shape, with and without a transform. Its meshes are tetra{o}.obj and tetra0.obj
-// beside it, written by tetra_obj(o, s) and tetra_obj(0, s).
-inline std::string far_json(double o, double s = 1.0) {
+// beside it, written by tetra_obj(o, s) and tetra_obj(0, s). With `uvn` the camera is
+// given by its axes u, v, n and view plane (no point it looks at), the same view.
+inline std::string far_json(double o, double s = 1.0, bool uvn = false) {
     const auto at = [&](double x, double y, double z) { return point(o, x, y, z, s); };
-    return R"({"camera": {"eye": )" + at(0, 2, 10) + R"(, "look_at": )" + at(0, 0, 0) +
-           R"(, "fov": 40}, "resolution": [160, 120],
+    const std::string view = uvn ? R"(, "u": [1, 0, 0], "v": [0, 10, -2], "n": [0, 2, 10], )"
+                                   R"("H": 0.36397023426620234})"
+                                 : R"(, "look_at": )" + at(0, 0, 0) + R"(, "fov": 40})";
+    return R"({"camera": {"eye": )" + at(0, 2, 10) + view + R"(, "resolution": [160, 120],
       "materials": {"floor": {"checker": {"colors": [[0.9, 0.9, 0.9], [0.2, 0.2, 0.6]], "scale": )" +
            number(s) + R"(}}},
       "lights": [{"type": "point", "position": )" +

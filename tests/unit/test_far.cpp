@@ -190,6 +190,24 @@ TEST(Far, AJsonSceneLooksTheSameAtAnyScale) {
         expect_like_size_one(scene_at(s), s, near, near_stats);
 }
 
+// The same with a camera given by u, v and n, which says nothing of the scene's size:
+// the size of what the file holds decides (read once more in its unit). Before, the tiny
+// scene lost its shadows, and one 2^-13 its size 1,024 units out was not rebased (sizes
+// and offsets of powers of two: the checker's squares line up there as at the origin).
+TEST(Far, AJsonSceneWithoutLookAtLooksTheSameAtAnyScale) {
+    const auto dir = test::temp_dir("far_json_uvn");
+    const auto scene_at = [&](double o, double s) {
+        test::write_file(dir / ("tetra" + number(o) + ".obj"), tetra_obj(o, s));
+        test::write_file(dir / "tetra0.obj", tetra_obj(0.0, s));
+        return test::write_file(dir / "scene.json", far_json(o, s, /*uvn=*/true));
+    };
+    RenderStats near_stats;
+    const Image near = render_file(scene_at(0.0, 1.0), &near_stats);
+    EXPECT_EQ(load_scene(dir / "scene.json").scale, 1.0);
+    for (const auto& [s, o] : {std::pair{1e-9, 0.0}, {1e15, 0.0}, {0x1p-13, 1024.0}})
+        expect_like_size_one(scene_at(o, s), s, near, near_stats);
+}
+
 // A NaN or infinite ray enters no box: before the guard, a NaN ray counted as inside
 // every lane, unused ones too, whose child 0 is the root: the stack overflowed.
 template <class Tree>
