@@ -208,7 +208,7 @@ mutant glsl-specular-dropped shaders/phong.frag \
     'colour += visible * (u_kd * c * n_dot_l + specular) * u_light_colour[i];' \
     'colour += visible * (u_kd * c * n_dot_l) * u_light_colour[i];' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*RasterEqualsLocal*'
-mutant far-scenes-not-rebased core/scene_loader.cpp \
+mutant far-scenes-not-rebased core/scene_loader_shared.h \
     'constexpr double kFarFromOrigin = 4096.0;' 'constexpr double kFarFromOrigin = 1e300;' \
     rt_tests $(unit 'Far.*')
 mutant nan-rays-enter-boxes core/ray.h \
@@ -370,7 +370,7 @@ mutant item-buffer-edges-take-their-hits-as-fresh core/scene.h \
 mutant item-buffer-fresh-hit-keeps-no-object core/scene.cpp \
     '            hits[lane].object = object;' '' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
-mutant small-scene-far-out-not-rebased core/scene_loader.cpp \
+mutant small-scene-far-out-not-rebased core/scene_loader_shared.h \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')
 mutant gpu-checker-shift-rounded shaders/gputrace.comp \

@@ -80,6 +80,29 @@ TEST(Far, BareObjLooksTheSameAtAnyOffset) {
     expect_same_at_every_offset("cube", far_cube_obj, ".obj");
 }
 
+// The every-shape scene 64 times its size (740 units across) 2^17 units out: nearer than
+// 256 of its sizes, so only the rule of 4096 units reads it relative to its eye. Read as
+// it is, float's step there (1/64) and the ray offsets (256 steps, 4 units) moved its
+// shadows' and reflections' edges (138 pixels of 19,200 unlike); relative to its eye it
+// is the scene at the origin (both in powers of two: every coordinate the same in float).
+TEST(Far, ALargeSceneFarOutIsReadRelativeToItsEye) {
+    const auto dir = test::temp_dir("far_large");
+    const double s = 64.0;
+    Image near;
+    for (const double o : {0.0, 0x1p17}) {
+        test::write_file(dir / ("tetra" + number(o) + ".obj"), tetra_obj(o, s));
+        test::write_file(dir / "tetra0.obj", tetra_obj(0.0, s));
+        const auto path = test::write_file(dir / "scene.json", far_json(o, s));
+        EXPECT_EQ(load_scene(path).origin,
+                  o == 0.0 ? glm::dvec3(0.0) : glm::dvec3(o, o + 2 * s, o + 10 * s));
+        const Image image = render_file(path, nullptr);
+        if (o == 0.0)
+            near = image;
+        else
+            EXPECT_EQ(compare_images(near, image).pixels_over, 0u);
+    }
+}
+
 // A 1 mm cube 1000 units out is framed and lit as at the origin: the camera's minimum
 // distance follows float's spacing there (a larger share of the coordinates framed it
 // far too small: 31 % of pixels differed), and a light nearer than the shadow feeler's
