@@ -284,6 +284,17 @@ mutant packet-interval-takes-one-inverse core/wide_bvh_packet.h \
 mutant box-exit-without-ize-factor core/wide_bvh.h \
     'inv_far[a] = splat<Float>(inv_a * kSlabExitFactor);' 'inv_far[a] = splat<Float>(inv_a);' \
     rt_tests $(unit 'Watertight.*')
+mutant packet-exit-without-ize-factor core/wide_bvh_packet.h \
+    'exit_inv_hi[a] = splat<Float>(highest(inv[a]) * kSlabExitFactor);' \
+    'exit_inv_hi[a] = splat<Float>(highest(inv[a]));' \
+    rt_tests $(unit 'Watertight.*')
+mutant packet-exit-lo-without-ize-factor core/wide_bvh_packet.h \
+    'exit_inv_lo[a] = splat<Float>(lowest(inv[a]) * kSlabExitFactor);' \
+    'exit_inv_lo[a] = splat<Float>(lowest(inv[a]));' \
+    rt_tests $(unit 'Watertight.*')
+mutant packet-ray-exit-without-ize-factor core/wide_bvh_packet.h \
+    'inv_far[a] = inv[a] * kSlabExitFactor;' 'inv_far[a] = inv[a];' \
+    rt_tests $(unit 'Watertight.*')
 mutant packet-triangles-error-bound-unscaled core/triangle_packet.h \
     't_det_error(o, r.abs_sz)' 't_det_error(o, splat<Float>(1.0f))' \
     rt_tests $(unit 'TrianglePacket.*')
