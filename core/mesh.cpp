@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <memory>
 #include <numbers>
 #include <numeric>
 #include <optional>
@@ -27,28 +26,17 @@ constexpr std::uint32_t kWideLeaf = kBvhWidth;
 void TriangleMesh::build(AccelKind kind, int threads) {
     threads = build_threads(threads);
     TaskPool* const pool = threads > 1 ? &TaskPool::shared(threads) : nullptr;
-    // The triangles' boxes, in parallel: on one thread they were 5 ms of a million-triangle
-    // build on two (docs/BENCHMARKS.md, eighth session).
-    // Allocated, not constructed: each box is constructed by the part that computes it
-    // (a constructed array would be written first, and its pages faulted, on one thread).
-    const std::size_t n = triangles.size();
-    std::allocator<Aabb> alloc;
-    const auto free = [&alloc, n](Aabb* p) { alloc.deallocate(p, n); };
-    const std::unique_ptr<Aabb[], decltype(free)> boxes(alloc.allocate(n), free);
-    const int box_parts = pool ? part_count(n, threads, 16384) : 1;
-    std::vector<Aabb> part_bounds(static_cast<std::size_t>(box_parts));
-    parallel_parts(pool, 0, n, box_parts, [&](int part, std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-            Aabb box;
-            for (int k = 0; k < 3; ++k) box.grow(positions[triangles[i][k]]);
-            std::construct_at(&boxes[i], box);
-            part_bounds[part].grow(box);
-        }
-    });
+    // The triangles' boxes on one thread: in parts on two, the first touch of a fresh
+    // array faults its pages from both at once, which was slower here (a million
+    // triangles: 6.2-7.8 ms against 5.8 ms; docs/BENCHMARKS.md, eighth session).
+    std::vector<Aabb> boxes(triangles.size());
     bounds_ = Aabb{};
-    for (const Aabb& b : part_bounds) bounds_.grow(b);
-    accel_.build(std::span<const Aabb>(boxes.get(), n), kind,
-                 kind == AccelKind::kBvh ? kWideLeaf : kTriangle4Lanes, threads, kTriangle4Lanes);
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+        for (int k = 0; k < 3; ++k) boxes[i].grow(positions[triangles[i][k]]);
+        bounds_.grow(boxes[i]);
+    }
+    accel_.build(boxes, kind, kind == AccelKind::kBvh ? kWideLeaf : kTriangle4Lanes, threads,
+                 kTriangle4Lanes);
     // Each leaf's first pack (a pass over the leaves), then the packs filled in parallel.
     const auto order = accel_.order();
     struct Leaf {
