@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -9,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "core/file_kind.h"
 
 namespace rt {
 namespace {
@@ -52,6 +56,31 @@ void gather(const std::string& file, const aiMesh& m, Gathered& g) {
     }
 }
 
+// A PLY header must end: Assimp's reader loops for ever on one cut off before its
+// end_header line. Read up to that line (a binary body follows it) or the file's end.
+void check_ply_header(const std::string& file, std::istream& in) {
+    std::string line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line == "end_header") return;
+    }
+    if (number == 0) throw Error(file, "header", "the file is empty");
+    throw Error(file, "line " + std::to_string(number),
+                "the PLY header ends without its end_header line");
+}
+
+// The file's bytes if it begins with a UTF-8 byte order mark, else nothing.
+std::string utf8_bom_file(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    char mark[3] = {};
+    if (!in.read(mark, 3) || mark[0] != '\xEF' || mark[1] != '\xBB' || mark[2] != '\xBF') return {};
+    std::ostringstream all;
+    all << in.rdbuf();
+    return std::string(mark, 3) + all.str();
+}
+
 }  // namespace
 
 MeshFile load_ply_stl(const std::filesystem::path& path, const MeshFileOptions& options) {
@@ -59,14 +88,36 @@ MeshFile load_ply_stl(const std::filesystem::path& path, const MeshFileOptions& 
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(file, "open", "cannot open file (does it exist?)");
+    const std::string bytes = utf8_bom_file(path);
+    if (lower_extension(path) == ".ply") {
+        std::ifstream in(path, std::ios::binary);
+        if (!bytes.empty()) in.seekg(3);
+        check_ply_header(file, in);
+    }
     Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(
-        file, aiProcess_Triangulate | aiProcess_ValidateDataStructure | aiProcess_SortByPType);
-    if (!scene || !scene->mRootNode) {
+    // A text file saved with a UTF-8 byte order mark is still the file: Assimp's PLY
+    // reader wants "ply" as its first bytes, so such a file is read from memory without
+    // the mark (its format named by the extension).
+    const aiScene* scene =
+        bytes.empty() ? importer.ReadFile(file, aiProcess_ValidateDataStructure)
+                      : importer.ReadFileFromMemory(bytes.data() + 3, bytes.size() - 3,
+                                                    aiProcess_ValidateDataStructure,
+                                                    path.extension().string().substr(1).c_str());
+    const auto parse_error = [&] {
         std::string what = importer.GetErrorString();
         std::replace(what.begin(), what.end(), '\n', ' ');
-        throw Error(file, "parse", what.empty() ? "not a readable PLY or STL file" : what);
-    }
+        return Error(file, "parse", what.empty() ? "not a readable PLY or STL file" : what);
+    };
+    if (!scene || !scene->mRootNode) throw parse_error();
+    // A face without vertices (a PLY cut off before its faces) passes Assimp's validation
+    // but stops the process in its triangulation (an assertion): refused here first.
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+        for (unsigned f = 0; f < scene->mMeshes[m]->mNumFaces; ++f)
+            if (scene->mMeshes[m]->mFaces[f].mNumIndices == 0)
+                throw Error(file, "face " + std::to_string(f),
+                            "has no vertices (is the file cut short?)");
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
+    if (!scene) throw parse_error();
     Gathered g;
     for (unsigned i = 0; i < scene->mNumMeshes; ++i) gather(file, *scene->mMeshes[i], g);
     if (g.triangles.empty()) throw Error(file, "faces", "no triangles: nothing to render");

@@ -2,6 +2,11 @@
 // wrote: one coloured octahedron as ASCII and binary PLY and as ASCII and binary STL.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <utility>
+
 #include <glm/geometric.hpp>
 
 #include "core/assimp_loader.h"
@@ -70,6 +75,37 @@ TEST(PlyStl, ScenesOfPlyAndStl) {
             ADD_FAILURE() << name << " loaded";
         } catch (const Error& e) {
             EXPECT_EQ(e.where(), "parse") << e.what();
+        }
+    }
+}
+
+// A PLY saved with a UTF-8 byte order mark is the same file. Cut short, it gets one
+// located error: before, a header without its end_header line hung Assimp's reader, and
+// a face without vertices (the file ending where its faces begin) aborted the process.
+TEST(PlyStl, AByteOrderMarkIsReadAndCutFilesAreRefused) {
+    const auto dir = test::temp_dir("ply_bom");
+    std::ifstream in(mesh("octahedron_ascii.ply"), std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const MeshFile plain = load_ply_stl(mesh("octahedron_ascii.ply"));
+    const MeshFile marked = load_ply_stl(test::write_file(dir / "bom.ply", "\xEF\xBB\xBF" + text));
+    EXPECT_EQ(marked.mesh.triangles, plain.mesh.triangles);
+    EXPECT_EQ(marked.mesh.positions, plain.mesh.positions);
+
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
+    const std::pair<std::string, std::string> cut[] = {
+        {header, "line 8"},                                        // no end_header
+        {"\xEF\xBB\xBF" + header.substr(0, 30), "line 3"},         // the same, marked
+        {"\xEF\xBB\xBF", "header"},                                // nothing but the mark
+        {header + "end_header\n0 0 0\n1 0 0\n0 1 0\n", "face 0"},  // no face line
+    };
+    for (const auto& [bytes, where] : cut) {
+        try {
+            load_ply_stl(test::write_file(dir / "cut.ply", bytes));
+            ADD_FAILURE() << where << ": loaded";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.where(), where) << e.what();
         }
     }
 }
