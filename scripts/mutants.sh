@@ -381,6 +381,15 @@ mutant item-buffer-edges-take-their-hits-as-fresh core/scene.h \
 mutant item-buffer-fresh-hit-keeps-no-object core/scene.cpp \
     '            hits[lane].object = object;' '' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
+mutant ply-header-unchecked core/assimp_loader.cpp \
+    '        check_ply_header(file, in);' '' \
+    rt_tests timeout 60 $(unit 'PlyStl.*')
+mutant ply-faces-without-vertices-triangulated core/assimp_loader.cpp \
+    'if (scene->mMeshes[m]->mFaces[f].mNumIndices == 0)' 'if (false)' \
+    rt_tests $(unit 'PlyStl.*')
+mutant ply-byte-order-mark-kept core/assimp_loader.cpp \
+    'return std::string(mark, 3) + all.str();' 'return {};' \
+    rt_tests $(unit 'PlyStl.*')
 mutant small-scene-far-out-not-rebased core/scene_loader_shared.h \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')
