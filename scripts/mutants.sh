@@ -382,11 +382,17 @@ mutant item-buffer-fresh-hit-keeps-no-object core/scene.cpp \
     '            hits[lane].object = object;' '' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
 mutant ply-header-unchecked core/assimp_loader.cpp \
-    '        check_ply_header(file, in);' '' \
+    '        check_ply_header(file, in, std::filesystem::file_size(path, ec));' '' \
     rt_tests timeout 60 $(unit 'PlyStl.*')
 mutant ply-faces-without-vertices-triangulated core/assimp_loader.cpp \
-    'if (scene->mMeshes[m]->mFaces[f].mNumIndices == 0)' 'if (false)' \
+    'if (face.mNumIndices == 0) {' 'if (false) {' \
     rt_tests $(unit 'PlyStl.*')
+mutant ply-primitive-types-not-recounted core/assimp_loader.cpp \
+    'mesh.mPrimitiveTypes = types;' '' \
+    rt_tests $(unit 'PlyStl.*')
+mutant ply-counts-unchecked core/assimp_loader.cpp \
+    'if (e.count > budget / e.least_bytes)' 'if (false)' \
+    rt_tests timeout 60 $(unit 'PlyStl.*')
 mutant ply-byte-order-mark-kept core/assimp_loader.cpp \
     'return std::string(mark, 3) + all.str();' 'return {};' \
     rt_tests $(unit 'PlyStl.*')

@@ -79,9 +79,10 @@ TEST(PlyStl, ScenesOfPlyAndStl) {
     }
 }
 
-// A PLY saved with a UTF-8 byte order mark is the same file. Cut short, it gets one
-// located error: before, a header without its end_header line hung Assimp's reader, and
-// a face without vertices (the file ending where its faces begin) aborted the process.
+// A PLY saved with a UTF-8 byte order mark is the same file. Cut short, or promising
+// more than it holds, it gets one located error: before, a header without its end_header
+// line hung Assimp's reader, a hundred million vertices declared over a few bytes kept it
+// busy for minutes, and a file ending where its faces begin aborted the process.
 TEST(PlyStl, AByteOrderMarkIsReadAndCutFilesAreRefused) {
     const auto dir = test::temp_dir("ply_bom");
     std::ifstream in(mesh("octahedron_ascii.ply"), std::ios::binary);
@@ -91,14 +92,18 @@ TEST(PlyStl, AByteOrderMarkIsReadAndCutFilesAreRefused) {
     EXPECT_EQ(marked.mesh.triangles, plain.mesh.triangles);
     EXPECT_EQ(marked.mesh.positions, plain.mesh.positions);
 
-    const std::string header =
-        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-        "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
+    const auto header = [](const std::string& vertices, const std::string& faces) {
+        return "ply\nformat ascii 1.0\nelement vertex " + vertices +
+               "\nproperty float x\nproperty float y\nproperty float z\nelement face " + faces +
+               "\nproperty list uchar int vertex_indices\n";
+    };
+    const std::string corners = "0 0 0\n1 0 0\n0 1 0\n";
     const std::pair<std::string, std::string> cut[] = {
-        {header, "line 8"},                                        // no end_header
-        {"\xEF\xBB\xBF" + header.substr(0, 30), "line 3"},         // the same, marked
-        {"\xEF\xBB\xBF", "header"},                                // nothing but the mark
-        {header + "end_header\n0 0 0\n1 0 0\n0 1 0\n", "face 0"},  // no face line
+        {header("3", "1"), "line 8"},                                   // no end_header
+        {"\xEF\xBB\xBF" + header("3", "1").substr(0, 30), "line 3"},    // the same, marked
+        {"\xEF\xBB\xBF", "header"},                                     // nothing but the mark
+        {header("3", "1") + "end_header\n" + corners, "element face"},  // no face line
+        {header("100000000", "1") + "end_header\n" + corners + "3 0 1 2\n", "element vertex"},
     };
     for (const auto& [bytes, where] : cut) {
         try {
@@ -108,6 +113,10 @@ TEST(PlyStl, AByteOrderMarkIsReadAndCutFilesAreRefused) {
             EXPECT_EQ(e.where(), where) << e.what();
         }
     }
+    // A face of no vertices is degenerate, not wrong: the other faces are the mesh.
+    const MeshFile empty_face = load_ply_stl(test::write_file(
+        dir / "empty_face.ply", header("3", "2") + "end_header\n" + corners + "0\n3 0 1 2\n"));
+    EXPECT_EQ(empty_face.mesh.triangles.size(), 1u);
 }
 
 }  // namespace
