@@ -140,7 +140,8 @@ MeshFile load_ply_stl(const std::filesystem::path& path, const MeshFileOptions& 
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(file, "open", "cannot open file (does it exist?)");
     const std::string bytes = utf8_bom_file(path);
-    if (lower_extension(path) == ".ply") {
+    const std::string extension = lower_extension(path);  // ".ply" or ".stl"
+    if (extension == ".ply") {
         std::ifstream in(path, std::ios::binary);
         if (!bytes.empty()) in.seekg(3);
         check_ply_header(file, in, std::filesystem::file_size(path, ec));
@@ -149,11 +150,11 @@ MeshFile load_ply_stl(const std::filesystem::path& path, const MeshFileOptions& 
     // A text file saved with a UTF-8 byte order mark is still the file: Assimp's PLY
     // reader wants "ply" as its first bytes, so such a file is read from memory without
     // the mark (its format named by the extension).
-    const aiScene* scene =
-        bytes.empty() ? importer.ReadFile(file, aiProcess_ValidateDataStructure)
-                      : importer.ReadFileFromMemory(bytes.data() + 3, bytes.size() - 3,
-                                                    aiProcess_ValidateDataStructure,
-                                                    path.extension().string().substr(1).c_str());
+    const aiScene* scene = bytes.empty()
+                               ? importer.ReadFile(file, aiProcess_ValidateDataStructure)
+                               : importer.ReadFileFromMemory(bytes.data() + 3, bytes.size() - 3,
+                                                             aiProcess_ValidateDataStructure,
+                                                             extension.substr(1).c_str());
     const auto parse_error = [&] {
         std::string what = importer.GetErrorString();
         std::replace(what.begin(), what.end(), '\n', ' ');

@@ -24,8 +24,6 @@ constexpr std::uint32_t kWideLeaf = kBvhWidth;
 }  // namespace
 
 void TriangleMesh::build(AccelKind kind, int threads) {
-    threads = build_threads(threads);
-    TaskPool* const pool = threads > 1 ? &TaskPool::shared(threads) : nullptr;
     // The triangles' boxes on one thread: in parts on two, the first touch of a fresh
     // array faults its pages from both at once, which was slower here (a million
     // triangles: 6.2-7.8 ms against 5.8 ms; docs/BENCHMARKS.md, eighth session).
@@ -75,6 +73,8 @@ void TriangleMesh::build(AccelKind kind, int threads) {
             }
         }
     };
+    threads = build_threads(threads);
+    TaskPool* const pool = threads > 1 ? &TaskPool::shared(threads) : nullptr;
     prim_lane_.clear();  // every triangle is in one leaf: each entry written by fill
     prim_lane_.resize(triangles.size());
     parallel_parts(pool, 0, leaves.size(), pool ? part_count(leaves.size(), threads, 4096) : 1,
