@@ -160,22 +160,40 @@ rt::LoadedScene load(const std::string& name) {
     return out;
 }
 
-// Every ray set through every entry, brute force on a subset of its rays.
+// Every ray set through every entry, brute force on a subset of its rays. Per set, each
+// entry's warm-up pass, then its timed passes in turns (ours, Embree, ours, ...; each
+// round begins one further along), so that a slow or quiet spell of the machine falls on
+// all alike: a structure's passes all run together let such a spell fall on one
+// structure alone, and its ratio to Embree moved by 0.1-0.2 between runs.
 void trace_sets(std::vector<Entry>& entries, const std::vector<RaySet>& sets,
                 const rt::TriangleMesh& mesh, const MeasureOptions& measure) {
     for (Entry& e : entries) {
-        e.answers.clear();
-        e.timing.clear();
-        for (const RaySet& set : sets) {
-            const double tests =
-                static_cast<double>(set.rays.size()) * static_cast<double>(mesh.triangles.size());
-            const std::size_t stride =
-                e.brute() ? std::max<std::size_t>(
-                                1, static_cast<std::size_t>(tests / measure.brute_budget))
-                          : 1;
-            e.answers.emplace_back();
-            e.timing.push_back(time_set(*e.structure, set, stride, measure, e.answers.back()));
+        e.answers.assign(sets.size(), {});
+        e.timing.assign(sets.size(), {});
+    }
+    for (std::size_t s = 0; s < sets.size(); ++s) {
+        const double tests =
+            static_cast<double>(sets[s].rays.size()) * static_cast<double>(mesh.triangles.size());
+        std::vector<std::size_t> strides;
+        for (Entry& e : entries) {
+            strides.push_back(e.brute()
+                                  ? std::max<std::size_t>(
+                                        1, static_cast<std::size_t>(tests / measure.brute_budget))
+                                  : 1);
+            trace_pass(*e.structure, sets[s], strides.back(), measure.threads, e.answers[s]);
         }
+        std::vector<std::vector<double>> seconds(entries.size());
+        const std::size_t n = entries.size();
+        for (int round = 0; round < measure.repeats; ++round)
+            for (std::size_t k = 0; k < n; ++k) {
+                const std::size_t i = (k + static_cast<std::size_t>(round)) % n;
+                if (round >= repeats_for(strides[i], measure.repeats)) continue;
+                seconds[i].push_back(trace_pass(*entries[i].structure, sets[s], strides[i],
+                                                measure.threads, entries[i].answers[s]));
+            }
+        for (std::size_t i = 0; i < n; ++i)
+            entries[i].timing[s] = summarise(*entries[i].structure, std::move(seconds[i]),
+                                             strides[i], entries[i].answers[s]);
     }
 }
 

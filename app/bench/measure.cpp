@@ -17,67 +17,63 @@ bool faulty(const Structure& s) {
     return name && s.name() == name;
 }
 
-// The median pass as a timing (and, for RTBENCH_FAULT's structure, every 50th answer
-// spoiled, so that the check must catch it).
-SetTiming timing(const Structure& s, std::vector<double> seconds, std::size_t count,
-                 std::size_t stride, std::vector<Result>& answers) {
+}  // namespace
+
+SetTiming summarise(const Structure& s, std::vector<double> seconds, std::size_t stride,
+                    std::vector<Result>& answers) {
     if (faulty(s))
         for (std::size_t i = 0; i < answers.size(); i += 50) answers[i] = Result{};
     SetTiming t;
     t.seconds = median(std::move(seconds));
-    t.rays = count;
+    t.rays = answers.size();
     t.stride = stride;
-    t.mrays_per_s = t.seconds > 0.0 ? static_cast<double>(count) / t.seconds * 1e-6 : 0.0;
+    t.mrays_per_s = t.seconds > 0.0 ? static_cast<double>(t.rays) / t.seconds * 1e-6 : 0.0;
     return t;
 }
 
-}  // namespace
+double trace_pass(const Structure& s, const RaySet& set, std::size_t stride, int threads,
+                  std::vector<Result>& answers) {
+    const std::size_t count = (set.rays.size() + stride - 1) / stride;
+    answers.resize(count);
+    if (const auto seconds = s.trace_set(set, stride, answers))
+        return *seconds;  // a batch structure: it times itself
+    const rt::Stopwatch watch;
+    parallel_for(count, threads, [&](std::size_t begin, std::size_t end) {
+        if (s.packets() && stride == 1) {  // chunks are whole packets but the last
+            for (std::size_t i = begin; i < end; i += rt::kPacketWidth) {
+                const int n = static_cast<int>(std::min<std::size_t>(rt::kPacketWidth, end - i));
+                if (set.occlusion) {
+                    s.occluded_packet(&set.rays[i], &set.t_max[i], n, &answers[i]);
+                } else {
+                    s.intersect_packet(&set.rays[i], &set.t_max[i], n, &answers[i]);
+                }
+            }
+            return;
+        }
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::size_t r = i * stride;
+            if (set.occlusion) {
+                answers[i].t = s.occluded(set.rays[r], set.t_max[r]) ? 0.0f : rt::kInfinity;
+            } else {
+                answers[i] = s.intersect(set.rays[r], set.t_max[r]);
+            }
+        }
+    });
+    return watch.seconds();
+}
+
+int repeats_for(std::size_t stride, int repeats) {
+    return stride > 1 ? std::max(1, repeats / 2) : repeats;
+}
 
 SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
                    const MeasureOptions& options, std::vector<Result>& answers) {
-    const std::size_t count = (set.rays.size() + stride - 1) / stride;
-    answers.assign(count, Result{});
-    if (s.trace_set(set, stride, answers)) {  // a batch structure: it times itself
-        std::vector<double> seconds;
-        for (int k = 0; k < options.repeats; ++k)
-            seconds.push_back(*s.trace_set(set, stride, answers));
-        return timing(s, seconds, count, stride, answers);
-    }
-    const auto pass = [&] {
-        parallel_for(count, options.threads, [&](std::size_t begin, std::size_t end) {
-            if (s.packets() && stride == 1) {  // chunks are whole packets but the last
-                for (std::size_t i = begin; i < end; i += rt::kPacketWidth) {
-                    const int n =
-                        static_cast<int>(std::min<std::size_t>(rt::kPacketWidth, end - i));
-                    if (set.occlusion) {
-                        s.occluded_packet(&set.rays[i], &set.t_max[i], n, &answers[i]);
-                    } else {
-                        s.intersect_packet(&set.rays[i], &set.t_max[i], n, &answers[i]);
-                    }
-                }
-                return;
-            }
-            for (std::size_t i = begin; i < end; ++i) {
-                const std::size_t r = i * stride;
-                if (set.occlusion) {
-                    answers[i].t = s.occluded(set.rays[r], set.t_max[r]) ? 0.0f : rt::kInfinity;
-                } else {
-                    answers[i] = s.intersect(set.rays[r], set.t_max[r]);
-                }
-            }
-        });
-    };
-    pass();  // warm-up: caches, page faults, thread start
-    if (faulty(s))
-        for (std::size_t i = 0; i < answers.size(); i += 50) answers[i] = Result{};
+    answers.clear();
+    trace_pass(s, set, stride, options.threads, answers);  // warm-up: caches, faults, threads
     std::vector<double> seconds;
-    const int repeats = stride > 1 ? std::max(1, options.repeats / 2) : options.repeats;
-    for (int k = 0; k < repeats; ++k) {
-        const rt::Stopwatch watch;
-        pass();
-        seconds.push_back(watch.seconds());
-    }
-    return timing(s, seconds, count, stride, answers);
+    for (int k = 0; k < repeats_for(stride, options.repeats); ++k)
+        seconds.push_back(trace_pass(s, set, stride, options.threads, answers));
+    return summarise(s, std::move(seconds), stride, answers);
 }
 
 Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::size_t stride,

@@ -35,6 +35,15 @@ struct Mismatches {
     bool ok() const { return hit_miss + wrong_hit <= allowed(); }
 };
 
+// One pass of every ray of `set` (or every stride-th) through `s`, on `threads`: its
+// seconds, and its answers in `answers`.
+double trace_pass(const Structure& s, const RaySet& set, std::size_t stride, int threads,
+                  std::vector<Result>& answers);
+// How many passes are timed: brute force, tracing a subset, takes half as many.
+int repeats_for(std::size_t stride, int repeats);
+// The median of a structure's passes, with the answers of its last pass.
+SetTiming summarise(const Structure& s, std::vector<double> seconds, std::size_t stride,
+                    std::vector<Result>& answers);
 // Traces every ray of `set` (or every stride-th) through `s`, after a warm-up pass,
 // `repeats` times; returns the median, and the answers of the last pass.
 SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
