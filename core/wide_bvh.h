@@ -15,6 +15,7 @@
 
 #include "core/aabb.h"
 #include "core/bvh.h"
+#include "core/large_array.h"
 #include "core/simd.h"
 
 namespace rt {
@@ -90,7 +91,7 @@ class WideBvh {
     template <class HitLeaf>
     bool any_hit_in_root(const detail::BoxRay<N>& box_ray, float& t_max, HitLeaf& hit_leaf) const;
 
-    std::vector<Node> nodes_;
+    LargeArray<Node> nodes_;  // written in full by build()
     std::vector<std::uint32_t> prims_;
     Aabb bounds_;
 };

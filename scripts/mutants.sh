@@ -155,8 +155,8 @@ mutant collapse-never-spreads-a-subtree core/wide_bvh.cpp \
     'const bool fewer = !(both[j] < cost_[i][j - 2]);' 'const bool fewer = true;' \
     rt_tests $(unit '*WideBvh*:*Accel*')
 mutant collapse-gives-the-right-child-one-lane core/wide_bvh.cpp \
-    'lanes_of(tree_[index].first, N - split_[index][0], lanes, n);' \
-    'lanes_of(tree_[index].first, 1, lanes, n);' \
+    'lanes_of(tree_[index].first, end, N - split_[index][0], l);' \
+    'lanes_of(tree_[index].first, end, 1, l);' \
     rt_tests $(unit '*WideBvh*:*Accel*')
 mutant pair-test-swaps-its-packs core/triangle4.h \
     '_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis])' \
@@ -399,6 +399,16 @@ mutant ply-byte-order-mark-kept core/assimp_loader.cpp \
 mutant small-scene-far-out-not-rebased core/scene_loader_shared.h \
     'constexpr double kFarForItsSize = 256.0;' 'constexpr double kFarForItsSize = 1e300;' \
     rt_tests $(unit 'Far.*')
+mutant collapse-part-misplaced core/wide_bvh.cpp \
+    'out[d.parent].child[d.lane] = d.at;' 'out[d.parent].child[d.lane] = d.at + 1;' \
+    rt_tests $(unit '*TheTreeIsTheSameOnAnyNumberOfThreadsAndWhole*')
+mutant collapse-cut-by-threads core/wide_bvh.cpp \
+    'if (l.end[k] - l.node[k] > kPartNodes)' \
+    'if (l.end[k] - l.node[k] > kPartNodes * static_cast<std::uint32_t>(threads_))' \
+    rt_tests $(unit '*TheTreeIsTheSameOnAnyNumberOfThreadsAndWhole*')
+mutant collapse-part-counted-short core/wide_bvh.cpp \
+    'std::uint32_t total = 1;' 'std::uint32_t total = 0;' \
+    rt_tests $(unit '*TheTreeIsTheSameOnAnyNumberOfThreadsAndWhole*')
 mutant gpu-checker-shift-rounded shaders/gputrace.comp \
     'precise vec3 r = (x - product) - error;' 'precise vec3 r = x - product;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*GpuTrace.AgreesOnTheCorners*'

@@ -6,6 +6,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <span>
 
@@ -474,6 +475,57 @@ TYPED_TEST(WideBvhTest, TheCollapseCostsNoMoreThanTheGreedyOne) {
         EXPECT_GE(per_node(leaves + wide.node_count() - 1, wide.node_count()),
                   per_node(greedy.lanes, greedy.nodes) + 0.3)
             << name;
+    }
+}
+
+// The collapse runs on the pool too (the parts of the binary tree, then the top): the
+// wide tree must not depend on how many threads, and each part's nodes must land where
+// its parent points: every node reached once from the root, every slot in one leaf.
+TYPED_TEST(WideBvhTest, TheTreeIsTheSameOnAnyNumberOfThreadsAndWhole) {
+    // Clusters of boxes on lattices (equal centres: ties), small ones beside large ones,
+    // so that small subtrees come before large ones in the tree.
+    std::mt19937 rng(29);
+    std::vector<Aabb> boxes;
+    for (const auto& [x, count] : {std::pair{0, 3000}, {100, 60000}, {300, 2000}, {400, 30000}}) {
+        const int side = static_cast<int>(std::cbrt(static_cast<float>(count))) + 4;
+        std::uniform_int_distribution<int> cell(0, side);
+        for (int i = 0; i < count; ++i) {
+            const vec3 lo(static_cast<float>(x + cell(rng)), static_cast<float>(cell(rng)),
+                          static_cast<float>(cell(rng)));
+            boxes.push_back({lo, lo + vec3(0.5f + static_cast<float>(i % 4))});
+        }
+    }
+    TypeParam one;
+    one.build(boxes, 4, 1);
+    std::vector<int> reached(one.node_count(), 0), slots(boxes.size(), 0);
+    std::vector<std::uint32_t> pending{0};
+    while (!pending.empty()) {
+        const std::uint32_t at = pending.back();
+        pending.pop_back();
+        ASSERT_LT(at, one.node_count());
+        ++reached[at];
+        const auto& node = one.nodes()[at];
+        for (int lane = 0; lane < TypeParam::kWidth; ++lane) {
+            if (node.count[lane] != 0) {
+                for (std::uint32_t s = 0; s < node.count[lane]; ++s) ++slots[node.child[lane] + s];
+            } else if (node.bounds[0][lane] <= node.bounds[3][lane]) {
+                pending.push_back(node.child[lane]);
+            }
+        }
+    }
+    EXPECT_EQ(std::count(reached.begin(), reached.end(), 1), static_cast<long>(reached.size()));
+    EXPECT_EQ(std::count(slots.begin(), slots.end(), 1), static_cast<long>(slots.size()));
+    for (int threads : {2, 3, 7}) {
+        TypeParam many;
+        many.build(boxes, 4, threads);
+        ASSERT_EQ(many.node_count(), one.node_count()) << threads << " threads";
+        EXPECT_EQ(std::memcmp(many.nodes().data(), one.nodes().data(),
+                              one.node_count() * sizeof(one.nodes()[0])),
+                  0)
+            << threads << " threads";
+        EXPECT_TRUE(std::equal(one.order().begin(), one.order().end(), many.order().begin(),
+                               many.order().end()))
+            << threads << " threads";
     }
 }
 
