@@ -172,14 +172,10 @@ void trace_sets(std::vector<Entry>& entries, const std::vector<RaySet>& sets,
         e.timing.assign(sets.size(), {});
     }
     for (std::size_t s = 0; s < sets.size(); ++s) {
-        const double tests =
-            static_cast<double>(sets[s].rays.size()) * static_cast<double>(mesh.triangles.size());
         std::vector<std::size_t> strides;
         for (Entry& e : entries) {
-            strides.push_back(e.brute()
-                                  ? std::max<std::size_t>(
-                                        1, static_cast<std::size_t>(tests / measure.brute_budget))
-                                  : 1);
+            strides.push_back(
+                stride_for(*e.structure, sets[s].rays.size(), mesh.triangles.size(), measure));
             trace_pass(*e.structure, sets[s], strides.back(), measure.threads, e.answers[s]);
         }
         std::vector<std::vector<double>> seconds(entries.size());

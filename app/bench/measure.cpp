@@ -62,6 +62,13 @@ double trace_pass(const Structure& s, const RaySet& set, std::size_t stride, int
     return watch.seconds();
 }
 
+std::size_t stride_for(const Structure& s, std::size_t rays, std::size_t triangles,
+                       const MeasureOptions& measure) {
+    if (s.name() != "brute") return 1;
+    const double tests = static_cast<double>(rays) * static_cast<double>(triangles);
+    return std::max<std::size_t>(1, static_cast<std::size_t>(tests / measure.brute_budget));
+}
+
 int repeats_for(std::size_t stride, int repeats) {
     return stride > 1 ? std::max(1, repeats / 2) : repeats;
 }

@@ -39,6 +39,10 @@ struct Mismatches {
 // seconds, and its answers in `answers`.
 double trace_pass(const Structure& s, const RaySet& set, std::size_t stride, int threads,
                   std::vector<Result>& answers);
+// Which rays `s` traces of a set of `rays` over `triangles`: every one (1), or for brute
+// force every k-th, so that a pass stays within measure.brute_budget triangle tests.
+std::size_t stride_for(const Structure& s, std::size_t rays, std::size_t triangles,
+                       const MeasureOptions& measure);
 // How many passes are timed: brute force, tracing a subset, takes half as many.
 int repeats_for(std::size_t stride, int repeats);
 // The median of a structure's passes, with the answers of its last pass.

@@ -92,12 +92,7 @@ std::vector<double> alternating_ns(const std::vector<std::unique_ptr<Structure>>
     for (int round = 0; round < std::max(1, measure.repeats); ++round) {
         for (std::size_t i = 0; i < structures.size(); ++i) {
             const Structure& s = *structures[i];
-            const double tests =
-                static_cast<double>(rays.rays.size()) * static_cast<double>(triangles);
-            const std::size_t stride =
-                s.name() == "brute"
-                    ? std::max<std::size_t>(1, static_cast<std::size_t>(tests / measure.brute_budget))
-                    : 1;
+            const std::size_t stride = stride_for(s, rays.rays.size(), triangles, measure);
             std::vector<Result> answers;
             const SetTiming t = time_set(s, rays, stride, one, answers);
             ns[i].push_back(1e9 * t.seconds / static_cast<double>(t.rays));

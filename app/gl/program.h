@@ -1,6 +1,6 @@
 #pragma once
-// A GLSL program built from two files in shaders/ (or one compute shader). Compile and link errors become
-// rt::Error "shaders/phong.frag: line 12: syntax error, unexpected ...".
+// A GLSL program built from two files in shaders/ (or one compute shader). Compile and link errors
+// become rt::Error "shaders/phong.frag: line 12: syntax error, unexpected ...".
 //
 // A program may be compiled with preprocessor definitions ("SHADOW_MAPS 1"), so that one
 // file serves as several specialised programs. On llvmpipe this is what makes a switched
@@ -14,8 +14,8 @@
 #include <vector>
 
 #include <glm/mat3x3.hpp>
-#include <glm/vec2.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "app/common/data_dir.h"

@@ -17,17 +17,25 @@ struct Bytes {
     const std::uint8_t* data;
     std::size_t size, at = 0;
     std::uint8_t next() { return at < size ? data[at++] : 0; }
-    float coordinate(float base) { return base + static_cast<float>(static_cast<std::int8_t>(next())) * 0.25f; }
+    float coordinate(float base) {
+        return base + static_cast<float>(static_cast<std::int8_t>(next())) * 0.25f;
+    }
 };
 
 float base_of(std::uint8_t mode) {
     switch (mode % 6) {
-        case 0: return 0.0f;
-        case 1: return 1e3f;
-        case 2: return 1e7f;
-        case 3: return -1e7f;
-        case 4: return 1e30f;
-        default: return 0.5f;  // the collapsed case: every box the same point
+        case 0:
+            return 0.0f;
+        case 1:
+            return 1e3f;
+        case 2:
+            return 1e7f;
+        case 3:
+            return -1e7f;
+        case 4:
+            return 1e30f;
+        default:
+            return 0.5f;  // the collapsed case: every box the same point
     }
 }
 

@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "core/image.h"
 #include "core/gltf_loader.h"
+#include "core/image.h"
 #include "core/obj_loader.h"
 #include "core/scene_loader.h"
 #include "test_util.h"
