@@ -167,6 +167,33 @@ struct Pass {
     }
 };
 
+// The colours of a tile's first hits, added to its pixels: the hits found go to the
+// tracer kPacketWidth at a time, their local terms computed across SIMD lanes.
+void shade_tile(const Pass& p, const Tracer& tracer, const Tile& t, const std::vector<Ray>& rays,
+                const std::vector<Hit>& hits, RayCounts& counts) {
+    const int w = t.x1 - t.x0;
+    const auto pixel = [&](std::uint32_t i) -> vec3& {
+        return p.image.at(t.x0 + static_cast<int>(i) % w, t.y0 + static_cast<int>(i) / w);
+    };
+    std::array<std::uint32_t, kPacketWidth> found;
+    std::array<vec3, kPacketWidth> colours;
+    int n = 0;
+    const auto shade = [&] {
+        tracer.shade_found(rays.data(), hits.data(), found.data(), n, counts, colours.data());
+        for (int k = 0; k < n; ++k) pixel(found[k]) += p.finite(colours[k]);
+        n = 0;
+    };
+    for (std::uint32_t i = 0; i < hits.size(); ++i) {
+        if (!hits[i].found()) {
+            pixel(i) += p.finite(p.scene.background);
+            continue;
+        }
+        found[n++] = i;
+        if (n == kPacketWidth) shade();
+    }
+    if (n > 0) shade();
+}
+
 // Each tile takes all its samples before the next tile, in one pass over the image: per
 // sample, the first hits of the tile's pixels (from the item buffer where there is one),
 // then their shading. The rays and hits of a tile stay in the cache (a frame-sized buffer
@@ -200,9 +227,7 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
                 primary_packets(p.scene, rays.rays, hits);
             local.primary += n;
             primary += lap.lap();
-            for (int y = t.y0, i = 0; y < t.y1; ++y)
-                for (int x = t.x0; x < t.x1; ++x, ++i)
-                    p.image.at(x, y) += p.finite(mine.shade_hit(rays.rays[i], hits[i], local));
+            shade_tile(p, mine, t, rays.rays, hits, local);
             shade += lap.lap();
         }
         p.fallbacks.fetch_add(fell, std::memory_order_relaxed);

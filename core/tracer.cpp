@@ -1,9 +1,12 @@
 #include "core/tracer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
+
+#include "core/vec3_lanes.h"
 
 namespace rt {
 vec3 reflect_dir(const vec3& d, const vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
@@ -80,12 +83,17 @@ PrimaryParts Tracer::trace_parts(const Ray& r, RayCounts& counts) const {
 void Tracer::shade_parts(const Ray& r, const Hit& hit, const Path& path, RayCounts& counts,
                          PrimaryParts& parts, bool unblocked) const {
     const SurfacePoint sp = scene_.surface(r, hit);
-    const Material& m = scene_.materials[sp.material];
     if (recorder_) recorder_->open().hit = hit_record(r, hit);
     parts.local = phong(r, sp, counts, options_.shadows);
     if (unblocked) parts.unblocked = options_.shadows ? phong(r, sp, counts, false) : parts.local;
     if (recorder_) recorder_->open().local = parts.local;
+    bounces(r, hit, sp, path, counts, parts);
+}
+
+void Tracer::bounces(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,
+                     RayCounts& counts, PrimaryParts& parts) const {
     if (path.depth >= options_.max_depth) return;
+    const Material& m = scene_.materials[sp.material];
     // R_n = R_amb + R_diff + R_spec + reflectivity R_(n-1), and the same for transmission.
     if (options_.reflections && m.reflectivity * path.weight >= options_.min_weight) {
         const Path next{path.depth + 1, path.weight * m.reflectivity, path.media,
@@ -103,12 +111,17 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts) cons
     return phong(r, sp, counts, options_.shadows);
 }
 
+// What multiplies ka and kd at a surface point: its checker, texture and vertex colour.
+vec3 Tracer::pattern_at(const Material& m, const SurfacePoint& sp) const {
+    vec3 pattern = m.checker ? m.checker->at(sp.pattern_point) : vec3(1.0f);
+    if (m.texture) pattern *= scene_.textures[*m.texture].sample(sp.uv);
+    return pattern * sp.colour;
+}
+
 // With `feelers` off every light in front of the surface counts as seen.
 vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool feelers) const {
     const Material& m = scene_.materials[sp.material];
-    vec3 pattern = m.checker ? m.checker->at(sp.pattern_point) : vec3(1.0f);
-    if (m.texture) pattern *= scene_.textures[*m.texture].sample(sp.uv);
-    pattern *= sp.colour;
+    const vec3 pattern = pattern_at(m, sp);
     vec3 colour = m.emission + m.ka * pattern * scene_.ambient;
     const vec3 to_viewer = -glm::normalize(r.dir);
     const vec3 p = offset_ray_origin(sp.p, sp.geometric_normal);
@@ -159,6 +172,109 @@ void Tracer::record_feeler(const Ray& feeler, float t_max, const Light& light, b
     Hit first;
     first.t = t_max;
     if (blocked && scene_.intersect(feeler, first)) node.blocker = hit_record(feeler, first);
+}
+
+// The local terms of several pixels at once: what phong reads, a pixel to a lane.
+using ShadeLanes = Vec3Lanes<kPacketWidth>;
+struct Tracer::PhongInputs {
+    ShadeLanes pattern, ka, kd, ks, emission, p, normal, to_viewer;
+    ShadeLanes::Float shininess;
+};
+
+void Tracer::shade_found(const Ray* rays, const Hit* hits, const std::uint32_t* which, int n,
+                         RayCounts& counts, vec3* colours) const {
+    std::array<SurfacePoint, kPacketWidth> sps;
+    std::array<vec3, kPacketWidth> dirs{}, local{};
+    for (int k = 0; k < n; ++k) {
+        sps[k] = scene_.surface(rays[which[k]], hits[which[k]]);
+        dirs[k] = rays[which[k]].dir;
+    }
+    phong_lanes(sps.data(), dirs.data(), n, counts, local.data());
+    for (int k = 0; k < n; ++k) {
+        PrimaryParts parts;
+        parts.local = local[k];
+        bounces(rays[which[k]], hits[which[k]], sps[k], Path{}, counts, parts);
+        colours[k] = parts.colour();
+    }
+}
+
+// Lanes past n repeat lane 0. Neighbouring pixels mostly show one material: then its
+// terms are splat, not gathered lane by lane.
+Tracer::PhongInputs Tracer::phong_inputs(const SurfacePoint* sps, const vec3* dirs, int n) const {
+    PhongInputs in;
+    bool one_material = true;
+    for (int k = 1; k < n; ++k) one_material &= sps[k].material == sps[0].material;
+    if (one_material) {
+        const Material& m = scene_.materials[sps[0].material];
+        in.ka = ShadeLanes::splat(m.ka);
+        in.kd = ShadeLanes::splat(m.kd);
+        in.ks = ShadeLanes::splat(m.ks);
+        in.emission = ShadeLanes::splat(m.emission);
+        in.shininess = splat<ShadeLanes::Float>(m.shininess);
+    }
+    ShadeLanes dir;
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        const int k = lane < n ? lane : 0;
+        const Material& m = scene_.materials[sps[k].material];
+        in.pattern.set(lane, pattern_at(m, sps[k]));
+        if (!one_material) {
+            in.ka.set(lane, m.ka);
+            in.kd.set(lane, m.kd);
+            in.ks.set(lane, m.ks);
+            in.emission.set(lane, m.emission);
+            in.shininess[lane] = m.shininess;
+        }
+        in.p.set(lane, sps[k].p);
+        in.normal.set(lane, sps[k].normal);
+        dir.set(lane, dirs[k]);
+    }
+    in.to_viewer = -normalize(dir);
+    return in;
+}
+
+// phong, a pixel to a lane: the same operations in the same order, so each lane's
+// colour is phong's bit for bit. Feelers and powers are taken lane by lane.
+void Tracer::phong_lanes(const SurfacePoint* sps, const vec3* dirs, int n, RayCounts& counts,
+                         vec3* local) const {
+    using Float = ShadeLanes::Float;
+    const PhongInputs in = phong_inputs(sps, dirs, n);
+    const Float zero = splat<Float>(0.0f);
+    ShadeLanes colour = in.emission + in.ka * in.pattern * ShadeLanes::splat(scene_.ambient);
+    const unsigned used = (1u << n) - 1u;
+    for (const Light& light : scene_.lights) {
+        ShadeLanes to_light = light.type == Light::Type::kPoint
+                                  ? ShadeLanes::splat(light.position) - in.p
+                                  : ShadeLanes::splat(-light.direction);
+        const Float distance = vsqrt(dot(to_light, to_light));
+        to_light = to_light / distance;
+        const Float n_dot_l = dot(in.normal, to_light);
+        unsigned lit =
+            bits((distance > zero) & (distance < splat<Float>(kInfinity)) & (n_dot_l > zero)) &
+            used;
+        for (unsigned rest = options_.shadows ? lit : 0u; rest != 0; rest &= rest - 1) {
+            const int k = __builtin_ctz(rest);
+            if (!visible(offset_ray_origin(sps[k].p, sps[k].geometric_normal), sps[k], light,
+                         counts))
+                lit &= ~(1u << k);
+        }
+        if (lit == 0) continue;
+        const ShadeLanes from_light = -to_light;  // reflect_dir(-to_light, normal)
+        const ShadeLanes mirrored =
+            from_light - in.normal * (splat<Float>(2.0f) * dot(from_light, in.normal));
+        const Float r_dot_v = vmax(dot(mirrored, in.to_viewer), zero);
+        Float power = zero;
+        const unsigned shiny = lit & bits(r_dot_v > zero);
+        for (unsigned rest = shiny; rest != 0; rest &= rest - 1) {
+            const int k = __builtin_ctz(rest);
+            power[k] = std::pow(r_dot_v[k], in.shininess[k]);
+        }
+        const ShadeLanes specular =
+            select(ShadeLanes::mask(shiny), in.ks * power, ShadeLanes::splat(vec3(0.0f)));
+        const ShadeLanes term =
+            (in.kd * in.pattern * n_dot_l + specular) * ShadeLanes::splat(light.colour);
+        colour = select(ShadeLanes::mask(lit), colour + term, colour);
+    }
+    for (int k = 0; k < n; ++k) local[k] = colour.get(k);
 }
 
 // `path` is the new ray's: one deeper, its weight, and (a reflection stays on its side

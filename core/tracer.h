@@ -7,6 +7,7 @@
 #include "core/medium.h"
 #include "core/ray_tree.h"
 #include "core/scene.h"
+#include "core/simd.h"
 
 namespace rt {
 
@@ -73,6 +74,13 @@ class Tracer {
     vec3 shade_hit(const Ray& r, const Hit& hit, RayCounts& counts) const;
     // A camera ray's colour in parts (a miss: the background, as local and unblocked).
     PrimaryParts trace_parts(const Ray& r, RayCounts& counts) const;
+    // The colours of up to kPacketWidth camera rays whose first hits are found, rays[k]
+    // and hits[k] for each k in `which`: bit for bit what shade_hit gives each one. Their
+    // surfaces are built one by one, the local Phong term across SIMD lanes (the lanes'
+    // materials, points and normals side by side: twice as fast as one pixel at a time),
+    // reflections and refractions ray by ray. Not with a recorder.
+    void shade_found(const Ray* rays, const Hit* hits, const std::uint32_t* which, int n,
+                     RayCounts& counts, vec3* colours) const;
 
     // The local Phong term at a surface point: ka Ia + sum over lights of
     // visible(p, l) (kd max(0, n.l) + ks max(0, r.v)^shininess) I_l.
@@ -95,6 +103,15 @@ class Tracer {
     void shade_parts(const Ray& r, const Hit& hit, const Path& path, RayCounts& counts,
                      PrimaryParts& parts, bool unblocked) const;
     vec3 phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool feelers) const;
+    vec3 pattern_at(const Material& m, const SurfacePoint& sp) const;
+    // The reflected and refracted rays' terms of shade_parts, from the hit's surface.
+    void bounces(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,
+                 RayCounts& counts, PrimaryParts& parts) const;
+    // phong for sps[0 .. n), seen along the directions `dirs`, a lane each.
+    struct PhongInputs;
+    PhongInputs phong_inputs(const SurfacePoint* sps, const vec3* dirs, int n) const;
+    void phong_lanes(const SurfacePoint* sps, const vec3* dirs, int n, RayCounts& counts,
+                     vec3* local) const;
     vec3 reflected(const Ray& r, const SurfacePoint& sp, const Path& path, RayCounts& counts) const;
     vec3 refracted(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,
                    RayCounts& counts) const;

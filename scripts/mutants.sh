@@ -139,6 +139,22 @@ mutant shadow-feeler-dropped core/tracer.cpp \
     'const bool blocked = scene_.occluded(Ray{p, dir}, t_max, index, sp.cannot_meet_again);' \
     'const bool blocked = false;' \
     rt_tests $(unit 'Shadows.*')
+# The renderer's shading of first hits across SIMD lanes (Tracer::shade_found).
+mutant shade-lanes-feelers-dropped core/tracer.cpp \
+    'for (unsigned rest = options_.shadows ? lit : 0u;' 'for (unsigned rest = 0u;' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant shade-lanes-one-material-misread core/tracer.cpp \
+    'for (int k = 1; k < n; ++k) one_material' 'for (int k = 2; k < n; ++k) one_material' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant shade-lanes-unlit-added core/tracer.cpp \
+    'colour = select(ShadeLanes::mask(lit), colour + term, colour);' 'colour = colour + term;' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant shade-lanes-viewer-unnormalised core/tracer.cpp \
+    'in.to_viewer = -normalize(dir);' 'in.to_viewer = -dir;' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant shade-lanes-without-bounces core/tracer.cpp \
+    'bounces(rays[which[k]], hits[which[k]], sps[k], Path{}, counts, parts);' '' \
+    rt_tests $(unit 'ShadeFound.*')
 mutant pixel-centre-off-by-half core/camera.h \
     'static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f' \
     'static_cast<float>(x), static_cast<float>(y)' \

@@ -1,6 +1,10 @@
 // Whitted shading on scenes whose right answer can be worked out by hand.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstring>
+#include <vector>
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -339,6 +343,88 @@ TEST(Checker, CellsAlternateByTheSumOfTheirIndices) {
 
 // A point light exactly at the surface point gives that point ambient light only, not
 // NaN (normalising the zero vector to the light).
+// Tracer::shade_found, the renderer's way to shade first hits, kPacketWidth at a time:
+// each lane must be shade_hit's colour bit for bit, with the same rays counted, whether
+// the lanes are neighbours (one material, mostly) or from all over the image.
+void expect_lanes_as_alone(const Scene& scene, const TraceOptions& options) {
+    std::vector<Ray> rays;
+    std::vector<Hit> hits;
+    for (int y = 0; y < scene.camera.rows; ++y) {
+        for (int x = 0; x < scene.camera.cols; ++x) {
+            Hit hit;
+            const Ray r = scene.camera.ray(x, y);
+            if (!scene.intersect(r, hit)) continue;
+            rays.push_back(r);
+            hits.push_back(hit);
+        }
+    }
+    ASSERT_GT(hits.size(), 2u * kPacketWidth);
+    const Tracer tracer(scene, options);
+    RayCounts alone, together;
+    int differing = 0;
+    std::array<std::uint32_t, kPacketWidth> which;
+    std::array<vec3, kPacketWidth> colours;
+    for (std::size_t start = 0, n = 1, group = 0; start + kPacketWidth <= hits.size();
+         start += n, n = n % kPacketWidth + 1, ++group) {
+        for (std::size_t k = 0; k < n; ++k)
+            which[k] =
+                static_cast<std::uint32_t>(group % 2 ? (start + 97 * k) % hits.size() : start + k);
+        tracer.shade_found(rays.data(), hits.data(), which.data(), static_cast<int>(n), together,
+                           colours.data());
+        for (std::size_t k = 0; k < n; ++k) {
+            const vec3 c = tracer.shade_hit(rays[which[k]], hits[which[k]], alone);
+            differing += std::memcmp(&c, &colours[k], sizeof(vec3)) != 0;
+        }
+    }
+    EXPECT_EQ(differing, 0);
+    EXPECT_EQ(together.shadow, alone.shadow);
+    EXPECT_EQ(together.reflected, alone.reflected);
+    EXPECT_EQ(together.refracted, alone.refracted);
+}
+
+TEST(ShadeFound, EachLaneIsShadeHitBitForBitOnTheShippedScenes) {
+    for (const std::string& name : test::shipped_scene_names()) {
+        SCOPED_TRACE(name);
+        const Scene scene(test::shipped_scene(name, 48, 32));
+        TraceOptions options;
+        options.max_depth = 2;
+        expect_lanes_as_alone(scene, options);
+        options.shadows = false;
+        options.max_depth = 0;
+        expect_lanes_as_alone(scene, options);
+    }
+}
+
+// What the shipped scenes lack: emission, a shininess that is no integer, a light behind
+// every surface, one so far away that its distance overflows, a directional light, and
+// materials changing from one pixel to the next.
+TEST(ShadeFound, EachLaneIsShadeHitBitForBitWhereLightsMisbehave) {
+    SceneDescription desc;
+    desc.camera = Camera::look_at({0, 3, 6}, {0, 0.5f, 0}, {0, 1, 0}, 50.0f, 40, 30);
+    desc.ambient = vec3(0.15f, 0.2f, 0.25f);
+    Material floor = test::plain(vec3(0.3f), vec3(0.7f, 0.6f, 0.5f), vec3(0.2f), 7.3f);
+    floor.checker = Checker{vec3(1.0f, 0.2f, 0.1f), vec3(0.1f, 0.3f, 1.0f), 0.25f};
+    Material glowing = test::plain(vec3(0.1f), vec3(0.4f), vec3(0.9f), 250.0f);
+    glowing.emission = vec3(0.3f, 0.1f, 0.0f);
+    glowing.reflectivity = 0.4f;
+    desc.materials = {floor, glowing, test::plain(vec3(0.2f), vec3(0.1f, 0.8f, 0.3f))};
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
+    desc.objects.push_back(Object{"ball", Sphere{{-0.8f, 0.7f, 0}, 0.7f}, 1, {}});
+    desc.objects.push_back(Object{"ball 2", Sphere{{0.9f, 0.5f, 0.5f}, 0.5f}, 2, {}});
+    desc.lights.push_back(Light{Light::Type::kPoint, {2, 5, 3}, {}, vec3(0.7f)});
+    desc.lights.push_back(Light{Light::Type::kPoint, {0, -3, 0}, {}, vec3(0.5f)});  // below
+    desc.lights.push_back(Light{Light::Type::kPoint, {3e38f, 3e38f, 0}, {}, vec3(0.5f)});
+    desc.lights.push_back(
+        Light{Light::Type::kDirectional, {}, glm::normalize(vec3(1, -2, -1)), vec3(0.3f)});
+    const Scene scene(std::move(desc));
+    for (bool shadows : {true, false}) {
+        TraceOptions options;
+        options.shadows = shadows;
+        options.max_depth = 2;
+        expect_lanes_as_alone(scene, options);
+    }
+}
+
 TEST(Phong, LightOnTheSurfaceGivesAmbientNotNaN) {
     SceneDescription desc;
     desc.ambient = vec3(0.25f);

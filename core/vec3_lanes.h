@@ -1,0 +1,61 @@
+#pragma once
+// Three-component vectors across SIMD lanes, one point or direction per lane (a
+// structure of arrays): the local Phong term of several pixels at once
+// (Tracer::shade_found). Each operation is glm's, lane by lane and in glm's order (a dot
+// product is (x x' + y y') + z z'; a normalisation multiplies by 1 / sqrt), and the build
+// does not fuse a * b + c, so every lane's result is bit for bit what glm computes.
+
+#include "core/ray.h"
+#include "core/simd.h"
+
+namespace rt {
+
+template <int N>
+struct Vec3Lanes {
+    using Float = typename Lanes<N>::Float;
+    using Mask = typename Lanes<N>::Mask;
+    Float x, y, z;
+
+    static Vec3Lanes splat(const vec3& v) {
+        return {rt::splat<Float>(v.x), rt::splat<Float>(v.y), rt::splat<Float>(v.z)};
+    }
+    void set(int lane, const vec3& v) {
+        x[lane] = v.x;
+        y[lane] = v.y;
+        z[lane] = v.z;
+    }
+    vec3 get(int lane) const { return vec3(x[lane], y[lane], z[lane]); }
+
+    friend Vec3Lanes operator+(const Vec3Lanes& a, const Vec3Lanes& b) {
+        return {a.x + b.x, a.y + b.y, a.z + b.z};
+    }
+    friend Vec3Lanes operator-(const Vec3Lanes& a, const Vec3Lanes& b) {
+        return {a.x - b.x, a.y - b.y, a.z - b.z};
+    }
+    friend Vec3Lanes operator-(const Vec3Lanes& a) { return {-a.x, -a.y, -a.z}; }
+    friend Vec3Lanes operator*(const Vec3Lanes& a, const Vec3Lanes& b) {
+        return {a.x * b.x, a.y * b.y, a.z * b.z};
+    }
+    friend Vec3Lanes operator*(const Vec3Lanes& a, Float s) { return {a.x * s, a.y * s, a.z * s}; }
+    friend Vec3Lanes operator/(const Vec3Lanes& a, Float s) { return {a.x / s, a.y / s, a.z / s}; }
+    friend Float dot(const Vec3Lanes& a, const Vec3Lanes& b) {
+        const Vec3Lanes p = a * b;
+        return p.x + p.y + p.z;
+    }
+    // glm::normalize: v * (1 / sqrt(v . v)).
+    friend Vec3Lanes normalize(const Vec3Lanes& v) {
+        return v * (rt::splat<Float>(1.0f) / vsqrt(dot(v, v)));
+    }
+    // The mask of the lanes whose bits (lane 0 lowest) are set.
+    static Mask mask(unsigned lanes) {
+        Mask bit;
+        for (int k = 0; k < N; ++k) bit[k] = 1 << k;
+        return ((Mask{} + static_cast<int>(lanes)) & bit) != 0;
+    }
+    // Lane by lane, `a` where `m` is set, else `b`.
+    friend Vec3Lanes select(Mask m, const Vec3Lanes& a, const Vec3Lanes& b) {
+        return {m ? a.x : b.x, m ? a.y : b.y, m ? a.z : b.z};
+    }
+};
+
+}  // namespace rt
