@@ -1,5 +1,7 @@
 #include "core/scene.h"
 
+#include <cstring>
+
 #include <array>
 #include <optional>
 #include <type_traits>
@@ -51,8 +53,10 @@ Scene::Scene(SceneDescription d, AccelKind kind, bool light_buffers)
                                         std::to_string(*m.texture) + " of " +
                                         std::to_string(textures.size()));
     std::vector<Aabb> boxes;
+    plane_frames_.resize(objects.size());
     for (std::uint32_t i = 0; i < objects.size(); ++i) {
-        if (std::holds_alternative<Plane>(objects[i].shape)) {
+        if (const Plane* plane = std::get_if<Plane>(&objects[i].shape)) {
+            tangent_frame(plane->normal, plane_frames_[i].t1, plane_frames_[i].t2);
             unbounded_.push_back(i);
             continue;
         }
@@ -323,10 +327,16 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
     SurfacePoint sp;
     Convex convex = Convex::kNo;
     const LocalSurface ls = visit_shape(o, [&](const auto& shape) {
-        convex = std::decay_t<decltype(shape)>::kConvex;
+        using Kind = std::decay_t<decltype(shape)>;
+        convex = Kind::kConvex;
         const LocalSurface s = shape.surface(local, hit);
         // A checker lies in the shape's own frame (a plane's), before the transform.
-        sp.pattern_point = shape.pattern_point(s.p);
+        if constexpr (std::is_same_v<Kind, Plane>) {
+            const PlaneFrame& f = plane_frames_[hit.object];  // Plane::pattern_point's
+            sp.pattern_point = vec3(glm::dot(s.p, f.t1), glm::dot(s.p, f.t2), 0.0f);
+        } else {
+            sp.pattern_point = shape.pattern_point(s.p);
+        }
         return s;
     });
     sp.material = ls.material.value_or(o.material);
@@ -334,14 +344,16 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
     sp.colour = ls.colour;
     if (origin != glm::dvec3(0.0))  // the usual case skips the call: 2 % of a Whitted frame
         sp.pattern_point += pattern_shift(hit.object, sp.material);
+    // A plane's and a sphere's two normals are one: normalised once.
+    const bool one_normal = std::memcmp(&ls.normal, &ls.geometric_normal, sizeof(vec3)) == 0;
     vec3 p = ls.p, ng = ls.geometric_normal, ns = ls.normal;
     if (o.transform) {
         p = o.transform->point_to_world(p);
         ng = o.transform->normal_to_world(ng);
-        ns = o.transform->normal_to_world(ns);
+        ns = one_normal ? ng : o.transform->normal_to_world(ns);
     } else {
         ng = glm::normalize(ng);
-        ns = glm::normalize(ns);
+        ns = one_normal ? ng : glm::normalize(ns);
     }
     sp.p = p;
     const bool front_face = glm::dot(r.dir, ng) < 0.0f;

@@ -146,6 +146,10 @@ class Scene {
     std::vector<std::uint32_t> bounded_;                     // traversal slot -> object
     std::vector<std::uint32_t> unbounded_;                   // planes: tested for every ray
     std::vector<std::optional<LightBuffer>> light_buffers_;  // per light, where it has one
+    struct PlaneFrame {
+        vec3 t1{0.0f}, t2{0.0f};  // tangent_frame of a plane's normal: its checker's axes
+    };
+    std::vector<PlaneFrame> plane_frames_;  // per object (planes only)
 };
 
 template <class... F>

@@ -155,6 +155,14 @@ mutant shade-lanes-viewer-unnormalised core/tracer.cpp \
 mutant shade-lanes-without-bounces core/tracer.cpp \
     'bounces(rays[which[k]], hits[which[k]], sps[k], Path{}, counts, parts);' '' \
     rt_tests $(unit 'ShadeFound.*')
+# Scene::surface's shortcuts: a plane's checker axes from the build, one normal
+# normalised once.
+mutant surface-plane-checker-one-axis core/scene.cpp \
+    'vec3(glm::dot(s.p, f.t1), glm::dot(s.p, f.t2), 0.0f)' 'vec3(glm::dot(s.p, f.t1), glm::dot(s.p, f.t1), 0.0f)' \
+    rt_tests $(unit 'Scene.*')
+mutant surface-smooth-normal-dropped core/scene.cpp \
+    'ns = one_normal ? ng : glm::normalize(ns);' 'ns = ng;' \
+    rt_tests $(unit 'Scene.*')
 mutant pixel-centre-off-by-half core/camera.h \
     'static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f' \
     'static_cast<float>(x), static_cast<float>(y)' \

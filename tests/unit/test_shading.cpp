@@ -341,8 +341,6 @@ TEST(Checker, CellsAlternateByTheSumOfTheirIndices) {
     EXPECT_EQ(c.at(vec3(0.5f, 1, 1) + shift), c.at({3.5f, 1, 1}));
 }
 
-// A point light exactly at the surface point gives that point ambient light only, not
-// NaN (normalising the zero vector to the light).
 // Tracer::shade_found, the renderer's way to shade first hits, kPacketWidth at a time:
 // each lane must be shade_hit's colour bit for bit, with the same rays counted, whether
 // the lanes are neighbours (one material, mostly) or from all over the image.
@@ -425,6 +423,8 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitWhereLightsMisbehave) {
     }
 }
 
+// A point light exactly at the surface point gives that point ambient light only, not
+// NaN (normalising the zero vector to the light).
 TEST(Phong, LightOnTheSurfaceGivesAmbientNotNaN) {
     SceneDescription desc;
     desc.ambient = vec3(0.25f);

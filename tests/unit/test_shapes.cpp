@@ -1,7 +1,11 @@
 // The tutorial's intersection formulas against values computed by hand.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
+
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/scene.h"
 #include "core/scene_loader.h"
@@ -168,6 +172,74 @@ TEST(Scene, ASphereHitReplacesAnEarlierMeshHitWhole) {
 
 namespace rt {
 namespace {
+
+// Scene::surface keeps a plane's checker axes (tangent_frame of its normal) from the
+// build, and normalises a plane's or sphere's one normal once: the surface must still be
+// what the shape itself gives, bit for bit, on tilted planes too.
+TEST(Scene, APlanesCheckerPointAndNormalsAreTheShapesOwn) {
+    SceneDescription desc;
+    desc.materials.push_back(test::plain(vec3(0.1f), vec3(0.7f)));
+    const Plane tilted{{0.3f, 2.0f, -0.7f}, -1.5f}, wall{{-1.0f, 0.0f, 0.2f}, -9.0f};
+    const Sphere ball{{0.5f, 0.0f, -4.0f}, 1.25f};
+    desc.objects.push_back(Object{"tilted", tilted, 0, {}});
+    desc.objects.push_back(Object{"wall", wall, 0, {}});
+    desc.objects.push_back(Object{"ball", ball, 0, {}});
+    const Scene scene(std::move(desc));
+    const auto same = [](const vec3& a, const vec3& b) {
+        return std::memcmp(&a, &b, sizeof a) == 0;
+    };
+    int planes = 0, balls = 0;
+    for (int i = 0; i < 400; ++i) {
+        const float a = 0.05f * static_cast<float>(i), b = 0.37f * static_cast<float>(i);
+        const Ray r{{0.0f, 0.5f, 2.0f}, {std::sin(a), 0.4f * std::cos(b), -1.0f}};
+        Hit hit;
+        if (!scene.intersect(r, hit)) continue;
+        const SurfacePoint sp = scene.surface(r, hit);
+        const vec3 facing = glm::dot(r.dir, sp.geometric_normal) < 0.0f ? vec3(1.0f) : vec3(-1.0f);
+        if (hit.object == 2) {
+            const LocalSurface ls = ball.surface(r, hit);
+            EXPECT_TRUE(same(sp.normal, glm::normalize(ls.normal) * facing)) << i;
+            ++balls;
+            continue;
+        }
+        const Plane& plane = hit.object == 0 ? tilted : wall;
+        const LocalSurface ls = plane.surface(r, hit);
+        EXPECT_TRUE(same(sp.pattern_point, plane.pattern_point(ls.p))) << i;
+        EXPECT_TRUE(same(sp.geometric_normal, glm::normalize(plane.normal) * facing)) << i;
+        EXPECT_TRUE(same(sp.normal, sp.geometric_normal)) << i;
+        ++planes;
+    }
+    EXPECT_GT(planes, 100);
+    EXPECT_GT(balls, 10);
+}
+
+// A mesh's two normals differ: the shading normal is its corners' interpolated, each
+// normalised on its own, with or without a transform.
+TEST(Scene, AMeshHitIsShadedWithItsInterpolatedNormal) {
+    SceneDescription desc;
+    desc.materials.push_back(test::plain(vec3(0.1f), vec3(0.7f)));
+    TriangleMesh mesh;
+    mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    mesh.triangles = {{0, 1, 2}};
+    mesh.corner_normals = {{-0.5f, 0, 1}, {0.5f, 0, 1}, {0, 0.8f, 1}};
+    desc.meshes.push_back(std::move(mesh));
+    const std::optional<Transform> moved = Transform::from_matrix(
+        glm::scale(glm::translate(glm::mat4(1.0f), vec3(5, 0, 0)), vec3(2.0f, 1.0f, 1.0f)));
+    ASSERT_TRUE(moved);
+    desc.objects.push_back(Object{"mesh", MeshRef{0, true}, 0, {}});
+    desc.objects.push_back(Object{"moved mesh", MeshRef{0, true}, 0, moved});
+    const Scene scene(std::move(desc));
+    for (const float x : {0.0f, 5.0f}) {
+        const Ray r{{x + 0.3f, -0.2f, 4.0f}, {0.0f, 0.0f, -1.0f}};
+        Hit hit;
+        ASSERT_TRUE(scene.intersect(r, hit));
+        const SurfacePoint sp = scene.surface(r, hit);
+        const vec3 local = scene.meshes[0].shading_normal(hit);
+        const vec3 want = x == 0.0f ? glm::normalize(local) : moved->normal_to_world(local);
+        EXPECT_EQ(sp.normal, want) << x;
+        EXPECT_GT(glm::length(sp.normal - sp.geometric_normal), 0.05f) << x;
+    }
+}
 
 // The item buffer names a mesh triangle per pixel and the tracer tests that triangle
 // alone (Scene::intersect_primitive); a full traversal finds the closest hit among all.
