@@ -75,12 +75,22 @@ inline Float4 vsqrt(Float4 a) {
     return a;
 }
 #endif
+// Lane by lane std::floor (exact either way).
+#if defined(__SSE4_1__)
+inline Float4 vfloor(Float4 a) { return _mm_floor_ps(a); }
+#else
+inline Float4 vfloor(Float4 a) {
+    for (int i = 0; i < 4; ++i) a[i] = __builtin_floorf(a[i]);
+    return a;
+}
+#endif
 
 #if defined(__AVX__)  // without AVX, eight lanes are not used (and would change the ABI)
 inline Float8 vmin(Float8 a, Float8 b) { return _mm256_min_ps(a, b); }
 inline Float8 vmax(Float8 a, Float8 b) { return _mm256_max_ps(a, b); }
 inline Float8 vabs(Float8 a) { return vmax(a, -a); }
 inline Float8 vsqrt(Float8 a) { return _mm256_sqrt_ps(a); }
+inline Float8 vfloor(Float8 a) { return _mm256_floor_ps(a); }
 inline unsigned bits(Mask8 m) {
     return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
 }

@@ -198,8 +198,22 @@ void Tracer::shade_found(const Ray* rays, const Hit* hits, const std::uint32_t* 
     }
 }
 
+// Checker::at across the lanes, the same operations on each.
+ShadeLanes checker_lanes(const Checker& c, const ShadeLanes& p) {
+    using Float = ShadeLanes::Float;
+    const Float scale = splat<Float>(c.scale);
+    const auto parity = [&](Float x) {
+        const Float f = vfloor(x / scale);
+        return f - splat<Float>(2.0f) * vfloor(splat<Float>(0.5f) * f);
+    };
+    const Float sum = parity(p.x) + parity(p.y) + parity(p.z);
+    return select((sum == splat<Float>(0.0f)) | (sum == splat<Float>(2.0f)),
+                  ShadeLanes::splat(c.colour_a), ShadeLanes::splat(c.colour_b));
+}
+
 // Lanes past n repeat lane 0. Neighbouring pixels mostly show one material: then its
-// terms are splat, not gathered lane by lane.
+// terms are splat, not gathered lane by lane, and a checker (without a texture) is
+// evaluated across the lanes.
 Tracer::PhongInputs Tracer::phong_inputs(const SurfacePoint* sps, const vec3* dirs, int n) const {
     PhongInputs in;
     bool one_material = true;
@@ -212,11 +226,18 @@ Tracer::PhongInputs Tracer::phong_inputs(const SurfacePoint* sps, const vec3* di
         in.emission = ShadeLanes::splat(m.emission);
         in.shininess = splat<ShadeLanes::Float>(m.shininess);
     }
-    ShadeLanes dir;
+    const Material& first = scene_.materials[sps[0].material];
+    const bool checker_across = one_material && first.checker && !first.texture;
+    ShadeLanes dir, pattern_point, colour;
     for (int lane = 0; lane < kPacketWidth; ++lane) {
         const int k = lane < n ? lane : 0;
         const Material& m = scene_.materials[sps[k].material];
-        in.pattern.set(lane, pattern_at(m, sps[k]));
+        if (checker_across) {
+            pattern_point.set(lane, sps[k].pattern_point);
+            colour.set(lane, sps[k].colour);
+        } else {
+            in.pattern.set(lane, pattern_at(m, sps[k]));
+        }
         if (!one_material) {
             in.ka.set(lane, m.ka);
             in.kd.set(lane, m.kd);
@@ -228,6 +249,7 @@ Tracer::PhongInputs Tracer::phong_inputs(const SurfacePoint* sps, const vec3* di
         in.normal.set(lane, sps[k].normal);
         dir.set(lane, dirs[k]);
     }
+    if (checker_across) in.pattern = checker_lanes(*first.checker, pattern_point) * colour;
     in.to_viewer = -normalize(dir);
     return in;
 }

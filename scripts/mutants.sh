@@ -152,6 +152,12 @@ mutant shade-lanes-unlit-added core/tracer.cpp \
 mutant shade-lanes-viewer-unnormalised core/tracer.cpp \
     'in.to_viewer = -normalize(dir);' 'in.to_viewer = -dir;' \
     rt_tests $(unit 'ShadeFound.*')
+mutant shade-lanes-checker-parity core/tracer.cpp \
+    '(sum == splat<Float>(0.0f)) | (sum == splat<Float>(2.0f))' '(sum == splat<Float>(0.0f))' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant shade-lanes-checker-without-colour core/tracer.cpp \
+    'checker_lanes(*first.checker, pattern_point) * colour;' 'checker_lanes(*first.checker, pattern_point);' \
+    rt_tests $(unit 'ShadeFound.*')
 mutant shade-lanes-without-bounces core/tracer.cpp \
     'bounces(rays[which[k]], hits[which[k]], sps[k], Path{}, counts, parts);' '' \
     rt_tests $(unit 'ShadeFound.*')

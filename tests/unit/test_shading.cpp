@@ -393,9 +393,9 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitOnTheShippedScenes) {
     }
 }
 
-// What the shipped scenes lack: emission, a shininess that is no integer, a light behind
-// every surface, one so far away that its distance overflows, a directional light, and
-// materials changing from one pixel to the next.
+// What the shipped scenes lack: emission, a shininess that is no integer, a checker on
+// vertex colours, a light behind every surface, one so far away that its distance
+// overflows, a directional light, and materials changing from one pixel to the next.
 TEST(ShadeFound, EachLaneIsShadeHitBitForBitWhereLightsMisbehave) {
     SceneDescription desc;
     desc.camera = Camera::look_at({0, 3, 6}, {0, 0.5f, 0}, {0, 1, 0}, 50.0f, 40, 30);
@@ -409,6 +409,12 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitWhereLightsMisbehave) {
     desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
     desc.objects.push_back(Object{"ball", Sphere{{-0.8f, 0.7f, 0}, 0.7f}, 1, {}});
     desc.objects.push_back(Object{"ball 2", Sphere{{0.9f, 0.5f, 0.5f}, 0.5f}, 2, {}});
+    TriangleMesh tinted;  // vertex colours under the floor's checker
+    tinted.positions = {{-2.5f, 0.1f, -1.5f}, {-0.5f, 0.1f, -1.5f}, {-1.5f, 1.8f, -1.5f}};
+    tinted.triangles = {{0, 1, 2}};
+    tinted.corner_colours = {{1.0f, 0.2f, 0.2f}, {0.2f, 1.0f, 0.2f}, {0.2f, 0.2f, 1.0f}};
+    desc.meshes.push_back(std::move(tinted));
+    desc.objects.push_back(Object{"tinted", MeshRef{0, true}, 0, {}});
     desc.lights.push_back(Light{Light::Type::kPoint, {2, 5, 3}, {}, vec3(0.7f)});
     desc.lights.push_back(Light{Light::Type::kPoint, {0, -3, 0}, {}, vec3(0.5f)});  // below
     desc.lights.push_back(Light{Light::Type::kPoint, {3e38f, 3e38f, 0}, {}, vec3(0.5f)});
