@@ -171,25 +171,27 @@ struct Pass {
 // tracer kPacketWidth at a time, their local terms computed across SIMD lanes.
 void shade_tile(const Pass& p, const Tracer& tracer, const Tile& t, const std::vector<Ray>& rays,
                 const std::vector<Hit>& hits, RayCounts& counts) {
-    const int w = t.x1 - t.x0;
-    const auto pixel = [&](std::uint32_t i) -> vec3& {
-        return p.image.at(t.x0 + static_cast<int>(i) % w, t.y0 + static_cast<int>(i) / w);
-    };
     std::array<std::uint32_t, kPacketWidth> found;
+    std::array<vec3*, kPacketWidth> pixels;
     std::array<vec3, kPacketWidth> colours;
     int n = 0;
     const auto shade = [&] {
         tracer.shade_found(rays.data(), hits.data(), found.data(), n, counts, colours.data());
-        for (int k = 0; k < n; ++k) pixel(found[k]) += p.finite(colours[k]);
+        for (int k = 0; k < n; ++k) *pixels[k] += p.finite(colours[k]);
         n = 0;
     };
-    for (std::uint32_t i = 0; i < hits.size(); ++i) {
-        if (!hits[i].found()) {
-            pixel(i) += p.finite(p.scene.background);
-            continue;
+    std::uint32_t i = 0;
+    for (int y = t.y0; y < t.y1; ++y) {
+        for (int x = t.x0; x < t.x1; ++x, ++i) {
+            vec3& pixel = p.image.at(x, y);
+            if (!hits[i].found()) {
+                pixel += p.finite(p.scene.background);
+                continue;
+            }
+            found[n] = i;
+            pixels[n++] = &pixel;
+            if (n == kPacketWidth) shade();
         }
-        found[n++] = i;
-        if (n == kPacketWidth) shade();
     }
     if (n > 0) shade();
 }
