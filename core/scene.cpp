@@ -10,6 +10,7 @@
 
 #include "core/shape_packets.h"
 #include "core/triangle4.h"
+#include "core/vec3_lanes.h"
 
 namespace rt {
 namespace {
@@ -364,6 +365,46 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
     ns = front_face ? ns : -ns;
     sp.normal = glm::dot(ns, sp.geometric_normal) > 0.0f ? ns : sp.geometric_normal;
     return sp;
+}
+
+bool Scene::plane_surfaces(const Ray* rays, const Hit* hits, const std::uint32_t* which, int n,
+                           SurfacePoint* out) const {
+    using Lanes3 = Vec3Lanes<kPacketWidth>;
+    using Float = Lanes3::Float;
+    const std::uint32_t object = hits[which[0]].object;
+    const Object& o = objects[object];
+    const Plane* plane = std::get_if<Plane>(&o.shape);
+    if (!plane || o.transform) return false;
+    for (int k = 1; k < n; ++k)
+        if (hits[which[k]].object != object) return false;
+    Lanes3 from, dir;
+    Float t;
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        const std::uint32_t i = which[lane < n ? lane : 0];
+        from.set(lane, rays[i].origin);
+        dir.set(lane, rays[i].dir);
+        t[lane] = hits[i].t;
+    }
+    // Plane::surface, then Scene::surface's steps for a plane.
+    const Lanes3 normal = Lanes3::splat(plane->normal);
+    Lanes3 p = from + dir * t;
+    p = p - normal * (dot(p, normal) - splat<Float>(plane->offset));
+    const PlaneFrame& f = plane_frames_[object];
+    Lanes3 pattern{dot(p, Lanes3::splat(f.t1)), dot(p, Lanes3::splat(f.t2)), splat<Float>(0.0f)};
+    if (origin != glm::dvec3(0.0))
+        pattern = pattern + Lanes3::splat(pattern_shift(object, o.material));
+    const vec3 unit = glm::normalize(plane->normal);
+    const unsigned front = bits(dot(dir, Lanes3::splat(unit)) < splat<Float>(0.0f));
+    for (int k = 0; k < n; ++k) {
+        SurfacePoint& sp = out[k];
+        sp = SurfacePoint{};
+        sp.p = p.get(k);
+        sp.geometric_normal = sp.normal = (front >> k) & 1u ? unit : -unit;
+        sp.material = o.material;
+        sp.pattern_point = pattern.get(k);
+        sp.cannot_meet_again = object;
+    }
+    return true;
 }
 
 vec3 Scene::pattern_shift(std::uint32_t object, std::uint32_t material) const {

@@ -119,6 +119,11 @@ class Scene {
                                         unsigned lanes, bool fresh = false) const;
 
     SurfacePoint surface(const Ray& r, const Hit& hit) const;
+    // surface for rays[which[k]] and hits[which[k]], k < n <= kPacketWidth, where every
+    // hit is on one plane without a transform (a floor's run of pixels), across SIMD
+    // lanes: bit for bit what surface gives. False, and nothing written, for other hits.
+    bool plane_surfaces(const Ray* rays, const Hit* hits, const std::uint32_t* which, int n,
+                        SurfacePoint* out) const;
     // What a checker of `material` on object `object` adds to its pattern point so that
     // the pattern lies where the file put it (Checker::shift of the origin); zero for
     // objects with a transform, whose pattern lies in their own coordinates.

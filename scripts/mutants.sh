@@ -158,6 +158,15 @@ mutant shade-lanes-checker-parity core/tracer.cpp \
 mutant shade-lanes-checker-without-colour core/tracer.cpp \
     'checker_lanes(*first.checker, pattern_point) * colour;' 'checker_lanes(*first.checker, pattern_point);' \
     rt_tests $(unit 'ShadeFound.*')
+mutant plane-lanes-not-back-on-the-plane core/scene.cpp \
+    'p = p - normal * (dot(p, normal) - splat<Float>(plane->offset));' '' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant plane-lanes-facing-ignored core/scene.cpp \
+    '(front >> k) & 1u ? unit : -unit;' 'unit;' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant plane-lanes-checker-unshifted core/scene.cpp \
+    'pattern = pattern + Lanes3::splat(pattern_shift(object, o.material));' 'pattern = pattern;' \
+    rt_tests $(unit 'Far*:ShadeFound.*')
 mutant shade-lanes-without-bounces core/tracer.cpp \
     'bounces(rays[which[k]], hits[which[k]], sps[k], Path{}, counts, parts);' '' \
     rt_tests $(unit 'ShadeFound.*')

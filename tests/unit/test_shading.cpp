@@ -394,8 +394,9 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitOnTheShippedScenes) {
 }
 
 // What the shipped scenes lack: emission, a shininess that is no integer, a checker on
-// vertex colours, a light behind every surface, one so far away that its distance
-// overflows, a directional light, and materials changing from one pixel to the next.
+// vertex colours, a plane seen from behind, a light behind every surface, one so far
+// away that its distance overflows, a directional light, and materials changing from one
+// pixel to the next.
 TEST(ShadeFound, EachLaneIsShadeHitBitForBitWhereLightsMisbehave) {
     SceneDescription desc;
     desc.camera = Camera::look_at({0, 3, 6}, {0, 0.5f, 0}, {0, 1, 0}, 50.0f, 40, 30);
@@ -407,6 +408,8 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitWhereLightsMisbehave) {
     glowing.reflectivity = 0.4f;
     desc.materials = {floor, glowing, test::plain(vec3(0.2f), vec3(0.1f, 0.8f, 0.3f))};
     desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
+    // A wall seen from behind (its normal faces away), tilted, off the origin.
+    desc.objects.push_back(Object{"wall", Plane{{0.2f, -0.1f, -2.0f}, 6.0f}, 0, {}});
     desc.objects.push_back(Object{"ball", Sphere{{-0.8f, 0.7f, 0}, 0.7f}, 1, {}});
     desc.objects.push_back(Object{"ball 2", Sphere{{0.9f, 0.5f, 0.5f}, 0.5f}, 2, {}});
     TriangleMesh tinted;  // vertex colours under the floor's checker
@@ -420,13 +423,16 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitWhereLightsMisbehave) {
     desc.lights.push_back(Light{Light::Type::kPoint, {3e38f, 3e38f, 0}, {}, vec3(0.5f)});
     desc.lights.push_back(
         Light{Light::Type::kDirectional, {}, glm::normalize(vec3(1, -2, -1)), vec3(0.3f)});
-    const Scene scene(std::move(desc));
     for (bool shadows : {true, false}) {
         TraceOptions options;
         options.shadows = shadows;
         options.max_depth = 2;
-        expect_lanes_as_alone(scene, options);
+        expect_lanes_as_alone(Scene(desc), options);
     }
+    // Far from the file's zero: the checker is shifted by the origin (Scene::pattern_shift),
+    // here by no whole number of its periods.
+    desc.origin = glm::dvec3(1.0e5 + 0.3, 0.0, -2.0e5 + 0.7);
+    expect_lanes_as_alone(Scene(std::move(desc)), TraceOptions{});
 }
 
 // A point light exactly at the surface point gives that point ambient light only, not
