@@ -314,7 +314,7 @@ mutant item-buffer-lanes-unmasked core/mesh.cpp \
 mutant shared-ids-written-by-lines app/gl/raster_renderer.cpp \
     'if (drawing_ids_) {' 'if (false) {' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*TheColourPassDrawsTheSameItemBuffer*'
-mutant tile-rays-off-centre core/renderer.cpp \
+mutant tile-rays-off-centre core/tile_rays.h \
     'camera.across(static_cast<float>(x) + 0.5f)' 'camera.across(static_cast<float>(x) + 0.49f)' \
     rt_tests $(unit 'Render.EveryPixelIsItsCentresRayTracedAlone')
 mutant packet-interval-takes-one-inverse core/wide_bvh_packet.h \
