@@ -1,8 +1,7 @@
 #include "core/scene.h"
 
-#include <cstring>
-
 #include <array>
+#include <cstring>
 #include <optional>
 #include <type_traits>
 

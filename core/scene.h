@@ -119,7 +119,7 @@ class Scene {
                                         unsigned lanes, bool fresh = false) const;
 
     SurfacePoint surface(const Ray& r, const Hit& hit) const;
-    // surface for rays[which[k]] and hits[which[k]], k < n <= kPacketWidth, where every
+    // surface for rays[which[k]] and hits[which[k]], k < n (1 to kPacketWidth), where every
     // hit is on one plane without a transform (a floor's run of pixels), across SIMD
     // lanes: bit for bit what surface gives. False, and nothing written, for other hits.
     bool plane_surfaces(const Ray* rays, const Hit* hits, const std::uint32_t* which, int n,

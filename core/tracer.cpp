@@ -174,8 +174,24 @@ void Tracer::record_feeler(const Ray& feeler, float t_max, const Light& light, b
     if (blocked && scene_.intersect(feeler, first)) node.blocker = hit_record(feeler, first);
 }
 
-// The local terms of several pixels at once: what phong reads, a pixel to a lane.
+namespace {
 using ShadeLanes = Vec3Lanes<kPacketWidth>;
+
+// Checker::at across the lanes, the same operations on each.
+ShadeLanes checker_lanes(const Checker& c, const ShadeLanes& p) {
+    using Float = ShadeLanes::Float;
+    const Float scale = splat<Float>(c.scale);
+    const auto parity = [&](Float x) {
+        const Float f = vfloor(x / scale);
+        return f - splat<Float>(2.0f) * vfloor(splat<Float>(0.5f) * f);
+    };
+    const Float sum = parity(p.x) + parity(p.y) + parity(p.z);
+    return select((sum == splat<Float>(0.0f)) | (sum == splat<Float>(2.0f)),
+                  ShadeLanes::splat(c.colour_a), ShadeLanes::splat(c.colour_b));
+}
+}  // namespace
+
+// The local terms of several pixels at once: what phong reads, a pixel to a lane.
 struct Tracer::PhongInputs {
     ShadeLanes pattern, ka, kd, ks, emission, p, normal, to_viewer;
     ShadeLanes::Float shininess;
@@ -197,19 +213,6 @@ void Tracer::shade_found(const Ray* rays, const Hit* hits, const std::uint32_t* 
         bounces(rays[which[k]], hits[which[k]], sps[k], Path{}, counts, parts);
         colours[k] = parts.colour();
     }
-}
-
-// Checker::at across the lanes, the same operations on each.
-ShadeLanes checker_lanes(const Checker& c, const ShadeLanes& p) {
-    using Float = ShadeLanes::Float;
-    const Float scale = splat<Float>(c.scale);
-    const auto parity = [&](Float x) {
-        const Float f = vfloor(x / scale);
-        return f - splat<Float>(2.0f) * vfloor(splat<Float>(0.5f) * f);
-    };
-    const Float sum = parity(p.x) + parity(p.y) + parity(p.z);
-    return select((sum == splat<Float>(0.0f)) | (sum == splat<Float>(2.0f)),
-                  ShadeLanes::splat(c.colour_a), ShadeLanes::splat(c.colour_b));
 }
 
 // Lanes past n repeat lane 0. Neighbouring pixels mostly show one material: then its

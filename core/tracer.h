@@ -74,7 +74,7 @@ class Tracer {
     vec3 shade_hit(const Ray& r, const Hit& hit, RayCounts& counts) const;
     // A camera ray's colour in parts (a miss: the background, as local and unblocked).
     PrimaryParts trace_parts(const Ray& r, RayCounts& counts) const;
-    // The colours of up to kPacketWidth camera rays whose first hits are found, rays[k]
+    // The colours of 1 to kPacketWidth camera rays whose first hits are found, rays[k]
     // and hits[k] for each k in `which`: bit for bit what shade_hit gives each one. Their
     // surfaces are built one by one, the local Phong term across SIMD lanes (the lanes'
     // materials, points and normals side by side: twice as fast as one pixel at a time),
