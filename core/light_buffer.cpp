@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/simd.h"
+
 namespace rt {
 
 using FaceSpan = LightBuffer::FaceSpan;
@@ -219,6 +221,55 @@ LightBuffer::Cell LightBuffer::grid_cell(const vec3& origin) const {
         cells_[static_cast<std::size_t>(static_cast<int>(v) * kGrid + static_cast<int>(u))];
     if (r.begin == kCrowded) return {};
     return {slots_.data() + r.begin, slots_.data() + r.end, false};
+}
+
+void LightBuffer::cells(const Ray* feelers, unsigned lanes, Cell* out) const {
+    using Float = Lanes<kPacketWidth>::Float;
+    if (directional_) {
+        for (; lanes != 0; lanes &= lanes - 1)
+            out[__builtin_ctz(lanes)] = grid_cell(feelers[__builtin_ctz(lanes)].origin);
+        return;
+    }
+    Float x{}, y{}, z{};  // lanes not asked about: no direction, not looked up
+    for (unsigned rest = lanes; rest != 0; rest &= rest - 1) {
+        const unsigned lane = __builtin_ctz(rest);
+        x[lane] = feelers[lane].origin.x;
+        y[lane] = feelers[lane].origin.y;
+        z[lane] = feelers[lane].origin.z;
+    }
+    // cell's steps, lane by lane: the face of the largest component (ties to the lower
+    // axis), its other two in the face's (u, v) order, and the same rounding.
+    x -= splat<Float>(light_.x), y -= splat<Float>(light_.y), z -= splat<Float>(light_.z);
+    const Float ax = vabs(x), ay = vabs(y), az = vabs(z);
+    const auto on_x = (ax >= ay) & (ax >= az);
+    const auto on_y = ~on_x & (ay >= az);
+    const Float w = on_x ? ax : (on_y ? ay : az);
+    const Float u = on_x ? y : (on_y ? z : x);
+    const Float v = on_x ? z : (on_y ? x : y);
+    const Float along = on_x ? x : (on_y ? y : z);
+    const Float face =
+        (on_x ? splat<Float>(0.0f) : (on_y ? splat<Float>(2.0f) : splat<Float>(4.0f))) +
+        (along < splat<Float>(0.0f) ? splat<Float>(1.0f) : splat<Float>(0.0f));
+    const auto valid = (w > splat<Float>(0.0f)) & (w < splat<Float>(kInfinity));
+    const Float scale = splat<Float>(0.5f * kCells) / w;
+    // clamp(int(t), 0, kCells - 1) as floats: floor and truncation agree once clamped
+    // below at 0, and a NaN (max takes its second operand then) becomes 0 as int() does.
+    const auto index = [&](Float t) {
+        const Float i = vfloor(t * scale + splat<Float>(0.5f * kCells));
+        return vmin(vmax(i, splat<Float>(0.0f)), splat<Float>(kCells - 1.0f));
+    };
+    const Float at = (face * splat<Float>(kCells) + index(v)) * splat<Float>(kCells) + index(u);
+    for (; lanes != 0; lanes &= lanes - 1) {
+        const unsigned lane = __builtin_ctz(lanes);
+        if (!valid[lane]) {  // on the light, or not finite
+            out[lane] = Cell{};
+            continue;
+        }
+        const Range r = cells_[static_cast<std::size_t>(at[lane])];
+        out[lane] = r.begin == kCrowded
+                        ? Cell{}
+                        : Cell{slots_.data() + r.begin, slots_.data() + r.end, false};
+    }
 }
 
 std::size_t LightBuffer::empty_cells() const {

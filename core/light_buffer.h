@@ -56,6 +56,9 @@ class LightBuffer {
         bool crowded = true;  // or no direction (origin on the light): traverse instead
     };
     Cell cell(const vec3& origin) const;
+    // cell for the origins of feelers[lane], for each bit of `lanes`, across SIMD lanes
+    // (out[lane]): the same cells, without a division and the face's branches each.
+    void cells(const Ray* feelers, unsigned lanes, Cell* out) const;
 
     // For the docs and tests: how many cells hold no object, and how many are crowded.
     std::size_t empty_cells() const;

@@ -36,10 +36,14 @@ inline bool finite_ray(const Ray& r) {
 // a fixed number of ULPs far from the origin, a small absolute step near it
 // (Waechter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection",
 // Ray Tracing Gems, ch. 6). This replaces the magic epsilon of t > 0.001.
+namespace origin_offset {
+inline constexpr float kOriginBand = 1.0f / 32.0f;     // below this |x|, step absolutely
+inline constexpr float kFloatScale = 1.0f / 65536.0f;  // absolute step near the origin
+inline constexpr float kIntScale = 256.0f;             // ULPs to step elsewhere
+}  // namespace origin_offset
+
 inline vec3 offset_ray_origin(const vec3& p, const vec3& normal) {
-    constexpr float kOriginBand = 1.0f / 32.0f;     // below this |x|, step absolutely
-    constexpr float kFloatScale = 1.0f / 65536.0f;  // absolute step near the origin
-    constexpr float kIntScale = 256.0f;             // ULPs to step elsewhere
+    using namespace origin_offset;
     vec3 out;
     for (int i = 0; i < 3; ++i) {
         const auto ulps = static_cast<std::int32_t>(kIntScale * normal[i]);

@@ -14,17 +14,6 @@
 namespace rt {
 namespace {
 
-// The ray in o's own space: r itself where o has no transform, else r moved into `moved`
-// (Transform::to_object's second form). Not a copy of r: a Ray copied whole is stored as
-// 16 + 8 bytes, and the shapes read its direction's x and y back as 8 bytes across the
-// two, which the store buffer cannot forward, so the load waited for both stores to
-// retire (Plane::surface was 14 % of a Whitted frame).
-const Ray& object_ray(const Object& o, const Ray& r, Ray& moved) {
-    if (!o.transform) return r;
-    o.transform->to_object(r, moved);
-    return moved;
-}
-
 std::vector<TriangleMesh> built(std::vector<TriangleMesh> meshes, AccelKind kind) {
     for (auto& mesh : meshes) mesh.build(kind);
     return meshes;
@@ -283,41 +272,6 @@ unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) co
             return hit;
         });
     return found;
-}
-
-// Inlined into the feelers' paths: a plane's test is a few instructions, its call more.
-[[gnu::always_inline]] inline bool Scene::occluded_by(std::uint32_t object, const Ray& r,
-                                                      float t_max) const {
-    const Object& o = objects[object];
-    Ray moved;
-    const Ray& local = object_ray(o, r, moved);
-    return visit_shape(o, [&](const auto& shape) { return shape.occluded(local, t_max); });
-}
-
-bool Scene::occluded(const Ray& r, float t_max) const {
-    for (std::uint32_t i : unbounded_)
-        if (occluded_by(i, r, t_max)) return true;
-    return top_.traverse<true>(r, t_max, [&](std::uint32_t slot, float& t_limit) {
-        return occluded_by(bounded_[slot], r, t_limit);
-    });
-}
-
-bool Scene::occluded(const Ray& feeler, float t_max, std::size_t light,
-                     std::uint32_t leaving) const {
-    for (std::uint32_t i : unbounded_)
-        if (i != leaving && occluded_by(i, feeler, t_max)) return true;
-    const std::optional<LightBuffer>& buffer = light_buffers_[light];
-    const LightBuffer::Cell cell = buffer ? buffer->cell(feeler.origin) : LightBuffer::Cell{};
-    // A ray that is not finite meets no bounded object in the tree (it checks), nor so in
-    // an empty cell (most cells: no check needed); in a listed one it goes to the tree.
-    if (cell.crowded || (cell.begin != cell.end && !finite_ray(feeler))) {
-        return top_.traverse<true>(feeler, t_max, [&](std::uint32_t slot, float& t_limit) {
-            return bounded_[slot] != leaving && occluded_by(bounded_[slot], feeler, t_limit);
-        });
-    }
-    for (const std::uint32_t* slot = cell.begin; slot != cell.end; ++slot)
-        if (bounded_[*slot] != leaving && occluded_by(bounded_[*slot], feeler, t_max)) return true;
-    return false;
 }
 
 SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {

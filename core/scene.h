@@ -38,6 +38,17 @@ struct Object {
     std::optional<Transform> transform;
 };
 
+// The ray in o's own space: r itself where o has no transform, else r moved into `moved`
+// (Transform::to_object's second form). Not a copy of r: a Ray copied whole is stored as
+// 16 + 8 bytes, and the shapes read its direction's x and y back as 8 bytes across the
+// two, which the store buffer cannot forward, so the load waited for both stores to
+// retire (Plane::surface was 14 % of a Whitted frame).
+inline const Ray& object_ray(const Object& o, const Ray& r, Ray& moved) {
+    if (!o.transform) return r;
+    o.transform->to_object(r, moved);
+    return moved;
+}
+
 struct SceneDescription {
     Camera camera;
     vec3 background{0.0f};
@@ -95,6 +106,12 @@ class Scene {
     // buffer cell (core/light_buffer.h), not the tree.
     bool occluded(const Ray& feeler, float t_max, std::size_t light,
                   std::uint32_t leaving = kNoObject) const;
+    // The same for up to kPacketWidth feelers to lights[light] at once (feelers[lane],
+    // t_max[lane] and leaving[lane] for each bit of `active`): each gets the answer it
+    // gets alone. Feelers that share a light buffer cell test its meshes as a packet.
+    // Returns the bits of those blocked.
+    unsigned occluded_packet(const Ray* feelers, const float* t_max, std::size_t light,
+                             const std::uint32_t* leaving, unsigned active) const;
     // The closest hit among `count` objects (indices) for the rays of `lanes` (rays[lane],
     // hits[lane], each within its hits[lane].t): where a ray's closest object is among
     // them, the hit intersect() gives. The item buffer's pixels on an edge test the objects
@@ -146,6 +163,9 @@ class Scene {
                                      unsigned lanes) const;
 
     bool occluded_by(std::uint32_t object, const Ray& r, float t_max) const;
+    unsigned occluded_by_packet(std::uint32_t object, const Ray* feelers, const float* t_max,
+                                unsigned lanes) const;
+    bool occluded_in_tree(const Ray& feeler, float t_max, std::uint32_t leaving) const;
 
     Accel top_;                                              // over the bounded objects
     std::vector<std::uint32_t> bounded_;                     // traversal slot -> object

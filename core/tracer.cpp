@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -144,24 +145,36 @@ vec3 Tracer::phong(const Ray& r, const SurfacePoint& sp, RayCounts& counts, bool
     return colour;
 }
 
+// The feeler from p (sp.p moved off the surface) to the light, or, where it points
+// behind the moved origin, the answer without one: decided from the true surface point,
+// a light behind the surface is not seen; one in front but nearer than the offset (a
+// small model, far enough out that float's step there is large) leaves no room for a
+// blocker.
+[[gnu::always_inline]] inline Tracer::FeelerCase Tracer::feeler_to(const vec3& p,
+                                                                   const SurfacePoint& sp,
+                                                                   const Light& light, Ray& feeler,
+                                                                   float& t_max) const {
+    feeler.origin = p;
+    t_max = light.feeler(p, feeler.dir);
+    if (!(glm::dot(feeler.dir, sp.geometric_normal) <= 0.0f)) return FeelerCase::kTrace;
+    vec3 from_surface;
+    light.feeler(sp.p, from_surface);
+    return glm::dot(from_surface, sp.geometric_normal) > 0.0f ? FeelerCase::kSeen
+                                                              : FeelerCase::kHidden;
+}
+
 // Inlined into phong, its only caller: the call itself (its arguments, the registers it
 // saves) cost as much as the checks around the feeler (callgrind, whitted 640 x 360).
 [[gnu::always_inline]] inline bool Tracer::visible(const vec3& p, const SurfacePoint& sp,
                                                    const Light& light, RayCounts& counts) const {
-    vec3 dir;
-    const float t_max = light.feeler(p, dir);
-    if (glm::dot(dir, sp.geometric_normal) <= 0.0f) {
-        // Behind the offset origin. Decide from the true surface point: a light behind the
-        // surface is not seen; one in front but nearer than the offset (a small model,
-        // far enough out that float's step there is large) leaves no room for a blocker.
-        vec3 from_surface;
-        light.feeler(sp.p, from_surface);
-        return glm::dot(from_surface, sp.geometric_normal) > 0.0f;
-    }
+    Ray feeler;
+    float t_max = 0.0f;
+    const FeelerCase found = feeler_to(p, sp, light, feeler, t_max);
+    if (found != FeelerCase::kTrace) return found == FeelerCase::kSeen;
     ++counts.shadow;
     const auto index = static_cast<std::size_t>(&light - scene_.lights.data());
-    const bool blocked = scene_.occluded(Ray{p, dir}, t_max, index, sp.cannot_meet_again);
-    if (recorder_) record_feeler(Ray{p, dir}, t_max, light, blocked);
+    const bool blocked = scene_.occluded(feeler, t_max, index, sp.cannot_meet_again);
+    if (recorder_) record_feeler(feeler, t_max, light, blocked);
     return !blocked;
 }
 
@@ -195,6 +208,7 @@ ShadeLanes checker_lanes(const Checker& c, const ShadeLanes& p) {
 struct Tracer::PhongInputs {
     ShadeLanes pattern, ka, kd, ks, emission, p, normal, to_viewer;
     ShadeLanes::Float shininess;
+    ShadeLanes geometric, origin;  // with feelers: the geometric normal, the feelers' origin
 };
 
 void Tracer::shade_found(const Ray* rays, const Hit* hits, const std::uint32_t* which, int n,
@@ -251,11 +265,54 @@ Tracer::PhongInputs Tracer::phong_inputs(const SurfacePoint* sps, const vec3* di
         }
         in.p.set(lane, sps[k].p);
         in.normal.set(lane, sps[k].normal);
+        if (options_.shadows) in.geometric.set(lane, sps[k].geometric_normal);
         dir.set(lane, dirs[k]);
     }
     if (checker_across) in.pattern = checker_lanes(*first.checker, pattern_point) * colour;
     in.to_viewer = -normalize(dir);
+    if (options_.shadows) in.origin = offset_ray_origin(in.p, in.geometric);
     return in;
+}
+
+namespace {
+// Light::feeler's direction from the points `from`, lane by lane.
+ShadeLanes feeler_lanes(const Light& light, const ShadeLanes& from) {
+    return light.type == Light::Type::kPoint ? ShadeLanes::splat(light.position) - from
+                                             : ShadeLanes::splat(-light.direction);
+}
+}  // namespace
+
+// visible for the lanes of `lit` at once (feeler_to's cases, then the scene's test of
+// the feelers together). `towards`: the light's direction from each surface point.
+// Returns the bits of those that see the light.
+unsigned Tracer::visible_lanes(const PhongInputs& in, const ShadeLanes& towards,
+                               const SurfacePoint* sps, unsigned lit, const Light& light,
+                               RayCounts& counts) const {
+    using Float = ShadeLanes::Float;
+    const ShadeLanes dir = feeler_lanes(light, in.origin);
+    const unsigned traced = lit & ~bits(dot(dir, in.geometric) <= splat<Float>(0.0f));
+    const unsigned seen = lit & ~traced & bits(dot(towards, in.geometric) > splat<Float>(0.0f));
+    if (traced == 0) return seen;
+    std::array<Ray, kPacketWidth> feelers;
+    std::array<std::uint32_t, kPacketWidth> leaving;
+    const float t_max = light.type == Light::Type::kPoint ? 1.0f : kInfinity;  // Light::feeler
+    std::array<float, kPacketWidth> limits;
+    limits.fill(t_max);
+    for (unsigned rest = traced; rest != 0; rest &= rest - 1) {
+        const int k = __builtin_ctz(rest);
+        feelers[k] = Ray{in.origin.get(k), dir.get(k)};
+        leaving[k] = sps[k].cannot_meet_again;
+    }
+    counts.shadow += static_cast<std::uint64_t>(std::popcount(traced));
+    const auto index = static_cast<std::size_t>(&light - scene_.lights.data());
+    const unsigned blocked =
+        scene_.occluded_packet(feelers.data(), limits.data(), index, leaving.data(), traced);
+    if (recorder_)
+        for (unsigned rest = traced; rest != 0; rest &= rest - 1) {
+            const int k = __builtin_ctz(rest);
+            record_feeler(feelers[k], t_max, light, ((blocked >> k) & 1u) != 0);
+        }
+    return seen | (traced & ~blocked);
 }
 
 // phong, a pixel to a lane: the same operations in the same order, so each lane's
@@ -268,21 +325,14 @@ void Tracer::phong_lanes(const SurfacePoint* sps, const vec3* dirs, int n, RayCo
     ShadeLanes colour = in.emission + in.ka * in.pattern * ShadeLanes::splat(scene_.ambient);
     const unsigned used = (1u << n) - 1u;
     for (const Light& light : scene_.lights) {
-        ShadeLanes to_light = light.type == Light::Type::kPoint
-                                  ? ShadeLanes::splat(light.position) - in.p
-                                  : ShadeLanes::splat(-light.direction);
-        const Float distance = vsqrt(dot(to_light, to_light));
-        to_light = to_light / distance;
+        const ShadeLanes towards = feeler_lanes(light, in.p);  // light.feeler(sp.p)
+        const Float distance = vsqrt(dot(towards, towards));
+        const ShadeLanes to_light = towards / distance;
         const Float n_dot_l = dot(in.normal, to_light);
         unsigned lit =
             bits((distance > zero) & (distance < splat<Float>(kInfinity)) & (n_dot_l > zero)) &
             used;
-        for (unsigned rest = options_.shadows ? lit : 0u; rest != 0; rest &= rest - 1) {
-            const int k = __builtin_ctz(rest);
-            if (!visible(offset_ray_origin(sps[k].p, sps[k].geometric_normal), sps[k], light,
-                         counts))
-                lit &= ~(1u << k);
-        }
+        if (options_.shadows && lit != 0) lit = visible_lanes(in, towards, sps, lit, light, counts);
         if (lit == 0) continue;
         const ShadeLanes from_light = -to_light;  // reflect_dir(-to_light, normal)
         const ShadeLanes mirrored =

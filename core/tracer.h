@@ -11,6 +11,9 @@
 
 namespace rt {
 
+template <int N>
+struct Vec3Lanes;
+
 struct TraceOptions {
     bool shadows = true;
     bool reflections = true;
@@ -115,8 +118,14 @@ class Tracer {
     vec3 reflected(const Ray& r, const SurfacePoint& sp, const Path& path, RayCounts& counts) const;
     vec3 refracted(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,
                    RayCounts& counts) const;
+    enum class FeelerCase { kTrace, kSeen, kHidden };
+    FeelerCase feeler_to(const vec3& p, const SurfacePoint& sp, const Light& light, Ray& feeler,
+                         float& t_max) const;
     bool visible(const vec3& p, const SurfacePoint& sp, const Light& light,
                  RayCounts& counts) const;
+    unsigned visible_lanes(const PhongInputs& in, const Vec3Lanes<kPacketWidth>& towards,
+                           const SurfacePoint* sps, unsigned lit, const Light& light,
+                           RayCounts& counts) const;
     RayHitRecord hit_record(const Ray& r, const Hit& hit) const;
     void record_feeler(const Ray& feeler, float t_max, const Light& light, bool blocked) const;
 

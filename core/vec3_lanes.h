@@ -5,6 +5,8 @@
 // product is (x x' + y y') + z z'; a normalisation multiplies by 1 / sqrt), and the build
 // does not fuse a * b + c, so every lane's result is bit for bit what glm computes.
 
+#include <bit>
+
 #include "core/ray.h"
 #include "core/simd.h"
 
@@ -57,5 +59,20 @@ struct Vec3Lanes {
         return {m ? a.x : b.x, m ? a.y : b.y, m ? a.z : b.z};
     }
 };
+
+// offset_ray_origin (core/ray.h), lane by lane.
+template <int N>
+Vec3Lanes<N> offset_ray_origin(const Vec3Lanes<N>& p, const Vec3Lanes<N>& normal) {
+    using Float = typename Lanes<N>::Float;
+    using Int = typename Lanes<N>::Mask;
+    using namespace origin_offset;
+    const auto step = [](Float x, Float n) {
+        const Int ulps = __builtin_convertvector(splat<Float>(kIntScale) * n, Int);
+        const Int bits = std::bit_cast<Int>(x);
+        const Float stepped = std::bit_cast<Float>(bits + (x < splat<Float>(0.0f) ? -ulps : ulps));
+        return vabs(x) < splat<Float>(kOriginBand) ? x + splat<Float>(kFloatScale) * n : stepped;
+    };
+    return {step(p.x, normal.x), step(p.y, normal.y), step(p.z, normal.z)};
+}
 
 }  // namespace rt

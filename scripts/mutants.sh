@@ -136,12 +136,12 @@ mutant gl-debug-not-installed app/gl/debug.cpp \
     'glDebugMessageCallback(on_debug_message, nullptr);' '(void)on_debug_message;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*ContextIsCoreProfile*'
 mutant shadow-feeler-dropped core/tracer.cpp \
-    'const bool blocked = scene_.occluded(Ray{p, dir}, t_max, index, sp.cannot_meet_again);' \
+    'const bool blocked = scene_.occluded(feeler, t_max, index, sp.cannot_meet_again);' \
     'const bool blocked = false;' \
     rt_tests $(unit 'Shadows.*')
 # The renderer's shading of first hits across SIMD lanes (Tracer::shade_found).
 mutant shade-lanes-feelers-dropped core/tracer.cpp \
-    'for (unsigned rest = options_.shadows ? lit : 0u;' 'for (unsigned rest = 0u;' \
+    'if (options_.shadows && lit != 0) lit = visible_lanes' 'if (false) lit = visible_lanes' \
     rt_tests $(unit 'ShadeFound.*')
 mutant shade-lanes-one-material-misread core/tracer.cpp \
     'for (int k = 1; k < n; ++k) one_material' 'for (int k = 2; k < n; ++k) one_material' \
@@ -364,10 +364,46 @@ mutant light-buffer-box-across-the-lights-plane-unclipped core/light_buffer.cpp 
 mutant light-buffer-no-margin core/light_buffer.cpp \
     'constexpr double kMargin = 1e-5;' 'constexpr double kMargin = 0.0;' \
     rt_tests $(unit 'LightBuffer.*')
-mutant crowded-cell-blocks-nothing core/scene.cpp \
+mutant crowded-cell-blocks-nothing core/scene_feelers.cpp \
     'return bounded_[slot] != leaving && occluded_by(bounded_[slot], feeler, t_limit);' \
     'return false && occluded_by(bounded_[slot], feeler, t_limit);' \
     rt_tests $(unit 'ShadowFeelers.*')
+# Feelers to one light several at a time (Scene::occluded_packet, LightBuffer::cells,
+# Tracer::visible_lanes).
+mutant light-buffer-lanes-u-for-v core/light_buffer.cpp \
+    'index(v)) * splat<Float>(kCells) + index(u);' 'index(u)) * splat<Float>(kCells) + index(v);' \
+    rt_tests $(unit 'LightBuffer.*')
+mutant light-buffer-lanes-face-sign core/light_buffer.cpp \
+    '(along < splat<Float>(0.0f) ?' '(along > splat<Float>(0.0f) ?' \
+    rt_tests $(unit 'LightBuffer.*')
+mutant light-buffer-lanes-ties-to-y core/light_buffer.cpp \
+    'const auto on_x = (ax >= ay) & (ax >= az);' 'const auto on_x = (ax > ay) & (ax >= az);' \
+    rt_tests $(unit 'LightBuffer.*')
+mutant feeler-packet-one-cell-for-all core/scene_feelers.cpp \
+    'cells[k].begin == cell.begin && cells[k].end == cell.end &&' '' \
+    rt_tests $(unit 'ShadowFeelers.*')
+mutant feeler-packet-tests-only-the-left-surface core/scene_feelers.cpp \
+    'if (leaving[__builtin_ctz(open)] != object)' 'if (leaving[__builtin_ctz(open)] == object)' \
+    rt_tests $(unit 'ShadowFeelers.*')
+mutant feeler-packet-mesh-sees-world-rays core/scene_feelers.cpp \
+    'occluded_packet(local.data(), t_max, lanes)' 'occluded_packet(feelers, t_max, lanes)' \
+    rt_tests $(unit 'ShadowFeelers.*')
+mutant feeler-packet-skips-the-planes core/scene_feelers.cpp \
+    'for (unsigned rest = active & ~blocked; rest != 0;' 'for (unsigned rest = active & ~blocked & 0u; rest != 0;' \
+    rt_tests $(unit 'ShadowFeelers.*')
+mutant feeler-lanes-offset-ignores-sign core/vec3_lanes.h \
+    '(x < splat<Float>(0.0f) ? -ulps : ulps)' 'ulps' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant feeler-lanes-behind-origin-always-seen core/tracer.cpp \
+    'bits(dot(towards, in.geometric) > splat<Float>(0.0f))' '~0u' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant feeler-lanes-leaving-nothing core/tracer.cpp \
+    'leaving[k] = sps[k].cannot_meet_again;' 'leaving[k] = kNoObject;' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant feeler-leaving-nothing core/tracer.cpp \
+    'scene_.occluded(feeler, t_max, index, sp.cannot_meet_again);' \
+    'scene_.occluded(feeler, t_max, index, kNoObject);' \
+    rt_tests $(unit 'ShadeFound.*')
 mutant feeler-skips-a-sphere-seen-from-inside core/scene.cpp \
     '(convex == Convex::kOutside && front_face)' '(convex == Convex::kOutside)' \
     rt_tests $(unit 'ShadowFeelers.*')
@@ -462,8 +498,9 @@ mutant oracle-refraction-indices-swapped core/tracer.cpp \
 mutant oracle-glass-nesting-ignored core/medium.h \
     'Crossing c{ior(), 1.0f, *this};' 'Crossing c{1.0f, 1.0f, *this};' rtrender "${oracle[@]}"
 mutant oracle-shadow-feeler-dropped core/tracer.cpp \
-    'const bool blocked = scene_.occluded(Ray{p, dir}, t_max, index, sp.cannot_meet_again);' \
-    'const bool blocked = false;' \
+    'const unsigned blocked =
+        scene_.occluded_packet(' 'const unsigned blocked = 0 &
+        scene_.occluded_packet(' \
     rtrender "${oracle[@]}"
 mutant oracle-camera-fov-2-percent-wide core/camera.cpp \
     'std::tan(glm::radians(vfov_degrees) * 0.5f)' 'std::tan(glm::radians(vfov_degrees) * 0.51f)' \

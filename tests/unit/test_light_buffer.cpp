@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <limits>
 #include <random>
 
@@ -325,6 +327,120 @@ TEST(ShadowFeelers, InsideASphereTheSphereStillBlocks) {
     const vec3 dark = tracer.phong(Ray{vec3(0.0f), {0, -1, 0}},
                                    scene.surface(Ray{vec3(0.0f), {0, -1, 0}}, inside), counts);
     EXPECT_FLOAT_EQ(dark.x, Material{}.ka.x * scene.ambient.x);
+}
+
+// LightBuffer::cells: each lane's cell is the one cell() gives its origin, for origins
+// anywhere, on the light, on the faces' diagonals (ties), not finite, and for any lanes.
+TEST(LightBuffer, CellsAcrossLanesAreEachOriginsOwn) {
+    std::mt19937 rng(8);
+    const vec3 l(1.5f, -2.0f, 0.25f);
+    const std::vector<Aabb> boxes = awkward_boxes(rng, l);
+    const LightBuffer point(l, boxes);
+    const std::optional<LightBuffer> directional = LightBuffer::make(
+        Light{Light::Type::kDirectional, {}, glm::normalize(vec3(-1, -2, -1)), vec3(1.0f)}, boxes);
+    ASSERT_TRUE(directional.has_value());
+    const float inf = kInfinity, nan = std::numeric_limits<float>::quiet_NaN();
+    std::vector<vec3> origins{l,
+                              l + vec3(1, 1, 0),
+                              l + vec3(-2, 2, 2),
+                              l + vec3(0, -3, 3),
+                              l + vec3(1e-30f, 0, 0),
+                              vec3(nan, 0, 0),
+                              vec3(0, inf, 0),
+                              vec3(3e38f, -3e38f, 1),
+                              l + vec3(4, 0.5f, -7)};
+    while (origins.size() < 64 * kPacketWidth) origins.push_back(l + random_point(rng, 12.0f));
+    std::shuffle(origins.begin(), origins.end(), rng);
+    const auto same = [](const LightBuffer::Cell& a, const LightBuffer::Cell& b) {
+        return a.crowded == b.crowded && (a.crowded || (a.begin == b.begin && a.end == b.end));
+    };
+    int empty = 0, listed_cells = 0;
+    for (std::size_t first = 0; first < origins.size(); first += kPacketWidth) {
+        std::array<Ray, kPacketWidth> feelers;
+        for (int k = 0; k < kPacketWidth; ++k) feelers[k].origin = origins[first + k];
+        const unsigned all = (1u << kPacketWidth) - 1u;
+        for (const unsigned lanes :
+             {all, 0x55u & all, 1u << (first / kPacketWidth % kPacketWidth)}) {
+            for (const LightBuffer* buffer : {&point, &*directional}) {
+                std::array<LightBuffer::Cell, kPacketWidth> cells;
+                buffer->cells(feelers.data(), lanes, cells.data());
+                for (unsigned rest = lanes; rest != 0; rest &= rest - 1) {
+                    const unsigned k = static_cast<unsigned>(__builtin_ctz(rest));
+                    const LightBuffer::Cell alone = buffer->cell(feelers[k].origin);
+                    ASSERT_TRUE(same(cells[k], alone))
+                        << "origin " << feelers[k].origin.x << ", " << feelers[k].origin.y << ", "
+                        << feelers[k].origin.z << (buffer == &point ? " (point)" : "");
+                    empty += !alone.crowded && alone.begin == alone.end;
+                    listed_cells += !alone.crowded && alone.begin != alone.end;
+                }
+            }
+        }
+    }
+    EXPECT_GT(empty, 100);
+    EXPECT_GT(listed_cells, 100);
+}
+
+// Scene::occluded_packet: each feeler's bit is occluded()'s answer for it alone. The
+// feelers of a group leave neighbouring surface points (they share cells, and a mesh's
+// feelers go through its tree as a packet) or points anywhere in the scene; some are
+// not finite.
+TEST(ShadowFeelers, APacketAnswersAsEachFeelerAlone) {
+    std::mt19937 rng(34);
+    std::uniform_real_distribution<float> jitter(-0.02f, 0.02f);
+    int blocked = 0, feelers = 0, shared = 0;
+    for (int variant = 0; variant < 3; ++variant) {
+        const vec3 shift = variant == 2 ? vec3(3000, -2000, 5000) : vec3(0.0f);
+        const Scene scene(shadow_casters(rng, shift));
+        for (int group = 0; group < 600; ++group) {
+            const bool neighbours = group % 3 != 2;
+            // Neighbours look at the box mesh (group % 3 == 0) or anywhere.
+            const vec3 eye = shift + random_point(rng, 12.0f);
+            const vec3 aim = group % 3 == 0 ? shift + vec3(2, 1, -3) + random_point(rng, 0.8f)
+                                            : shift + random_point(rng, 8.0f);
+            std::array<SurfacePoint, kPacketWidth> sps;
+            unsigned found = 0;
+            for (int k = 0; k < kPacketWidth; ++k) {
+                const Ray ray =
+                    neighbours ? Ray{eye, aim - eye + vec3(jitter(rng), jitter(rng), jitter(rng))}
+                               : Ray{shift + random_point(rng, 12.0f), random_point(rng, 1.0f)};
+                Hit hit;
+                if (!scene.intersect(ray, hit)) continue;
+                sps[k] = scene.surface(ray, hit);
+                found |= 1u << k;
+            }
+            for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+                std::array<Ray, kPacketWidth> rays;
+                std::array<float, kPacketWidth> t_max{};
+                std::array<std::uint32_t, kPacketWidth> leaving{};
+                unsigned active = 0;
+                for (unsigned rest = found; rest != 0; rest &= rest - 1) {
+                    const unsigned k = static_cast<unsigned>(__builtin_ctz(rest));
+                    rays[k].origin = offset_ray_origin(sps[k].p, sps[k].geometric_normal);
+                    t_max[k] = scene.lights[l].feeler(rays[k].origin, rays[k].dir);
+                    leaving[k] = sps[k].cannot_meet_again;
+                    if (group % 17 == 5 && k == 1) rays[k].dir.x = kInfinity;  // not finite
+                    active |= 1u << k;
+                }
+                const unsigned packet =
+                    scene.occluded_packet(rays.data(), t_max.data(), l, leaving.data(), active);
+                EXPECT_EQ(packet & ~active, 0u) << "a bit of a lane not asked about";
+                for (unsigned rest = active; rest != 0; rest &= rest - 1) {
+                    const unsigned k = static_cast<unsigned>(__builtin_ctz(rest));
+                    const bool alone = scene.occluded(rays[k], t_max[k], l, leaving[k]);
+                    ASSERT_EQ(((packet >> k) & 1u) != 0, alone)
+                        << "variant " << variant << ", group " << group << ", light " << l
+                        << ", lane " << k;
+                    blocked += alone;
+                    ++feelers;
+                }
+                shared += neighbours && std::popcount(packet) >= 2;
+            }
+        }
+    }
+    EXPECT_GT(feelers, 20000);
+    EXPECT_GT(blocked, feelers / 10);
+    EXPECT_LT(blocked, feelers - feelers / 10);
+    EXPECT_GT(shared, 200) << "groups blocked together";
 }
 
 }  // namespace

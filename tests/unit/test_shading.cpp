@@ -435,6 +435,53 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitWhereLightsMisbehave) {
     expect_lanes_as_alone(Scene(std::move(desc)), TraceOptions{});
 }
 
+// A ball a thousand units across, its top seen from near by, lit by lights that graze
+// it: a feeler leaving its surface cannot meet it again (it is convex), but tested
+// against it, a quarter of them would, float's rounding giving hits at tiny t. Nothing
+// else casts a shadow, so with feelers every colour is the colour without them, in the
+// lanes (shade_found) and alone (shade_hit).
+TEST(ShadeFound, FeelersDoNotMeetTheLargeBallTheyLeave) {
+    SceneDescription desc;
+    desc.camera = Camera::look_at({0, 10, 5}, {0, 0, 0}, {0, 1, 0}, 60.0f, 40, 30);
+    desc.materials = {test::plain(vec3(0.1f), vec3(0.8f), vec3(0.3f), 20.0f)};
+    desc.objects.push_back(Object{"planet", Sphere{{0, -1000, 0}, 1000}, 0, {}});
+    desc.lights.push_back(Light{Light::Type::kPoint, {50, 0.5f, 0}, {}, vec3(0.7f)});
+    desc.lights.push_back(
+        Light{Light::Type::kDirectional, {}, glm::normalize(vec3(-1, -0.01f, 0.2f)), vec3(0.5f)});
+    const Scene scene(std::move(desc));
+    TraceOptions with, without;
+    with.max_depth = without.max_depth = 0;
+    without.shadows = false;
+    const Tracer feelers(scene, with), none(scene, without);
+    RayCounts counts;
+    int pixels = 0, differing = 0;
+    for (int y = 0; y < scene.camera.rows; ++y) {
+        std::array<Ray, kPacketWidth> rays;
+        std::array<Hit, kPacketWidth> hits;
+        std::array<std::uint32_t, kPacketWidth> which;
+        std::array<vec3, kPacketWidth> lanes;
+        for (int x0 = 0; x0 + kPacketWidth <= scene.camera.cols; x0 += kPacketWidth) {
+            for (int k = 0; k < kPacketWidth; ++k) {
+                rays[k] = scene.camera.ray(x0 + k, y);
+                hits[k] = Hit{};
+                ASSERT_TRUE(scene.intersect(rays[k], hits[k]));
+                which[k] = static_cast<std::uint32_t>(k);
+            }
+            feelers.shade_found(rays.data(), hits.data(), which.data(), kPacketWidth, counts,
+                                lanes.data());
+            for (int k = 0; k < kPacketWidth; ++k) {
+                const vec3 lit = none.shade_hit(rays[k], hits[k], counts);
+                const vec3 alone = feelers.shade_hit(rays[k], hits[k], counts);
+                differing += std::memcmp(&lit, &lanes[k], sizeof(vec3)) != 0;
+                differing += std::memcmp(&lit, &alone, sizeof(vec3)) != 0;
+                ++pixels;
+            }
+        }
+    }
+    EXPECT_GT(pixels, 1000);
+    EXPECT_EQ(differing, 0);
+}
+
 // A point light exactly at the surface point gives that point ambient light only, not
 // NaN (normalising the zero vector to the light).
 TEST(Phong, LightOnTheSurfaceGivesAmbientNotNaN) {

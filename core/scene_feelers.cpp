@@ -1,0 +1,120 @@
+// Scene's shadow feelers: one at a time, and several to one light at once.
+#include <array>
+#include <bit>
+#include <optional>
+
+#include "core/scene.h"
+
+namespace rt {
+
+// Inlined into the feelers' paths: a plane's test is a few instructions, its call more.
+[[gnu::always_inline]] inline bool Scene::occluded_by(std::uint32_t object, const Ray& r,
+                                                      float t_max) const {
+    const Object& o = objects[object];
+    Ray moved;
+    const Ray& local = object_ray(o, r, moved);
+    return visit_shape(o, [&](const auto& shape) { return shape.occluded(local, t_max); });
+}
+
+bool Scene::occluded(const Ray& r, float t_max) const {
+    for (std::uint32_t i : unbounded_)
+        if (occluded_by(i, r, t_max)) return true;
+    return top_.traverse<true>(r, t_max, [&](std::uint32_t slot, float& t_limit) {
+        return occluded_by(bounded_[slot], r, t_limit);
+    });
+}
+
+bool Scene::occluded_in_tree(const Ray& feeler, float t_max, std::uint32_t leaving) const {
+    return top_.traverse<true>(feeler, t_max, [&](std::uint32_t slot, float& t_limit) {
+        return bounded_[slot] != leaving && occluded_by(bounded_[slot], feeler, t_limit);
+    });
+}
+
+bool Scene::occluded(const Ray& feeler, float t_max, std::size_t light,
+                     std::uint32_t leaving) const {
+    for (std::uint32_t i : unbounded_)
+        if (i != leaving && occluded_by(i, feeler, t_max)) return true;
+    const std::optional<LightBuffer>& buffer = light_buffers_[light];
+    const LightBuffer::Cell cell = buffer ? buffer->cell(feeler.origin) : LightBuffer::Cell{};
+    // A ray that is not finite meets no bounded object in the tree (it checks), nor so in
+    // an empty cell (most cells: no check needed); in a listed one it goes to the tree.
+    if (cell.crowded || (cell.begin != cell.end && !finite_ray(feeler)))
+        return occluded_in_tree(feeler, t_max, leaving);
+    for (const std::uint32_t* slot = cell.begin; slot != cell.end; ++slot)
+        if (bounded_[*slot] != leaving && occluded_by(bounded_[*slot], feeler, t_max)) return true;
+    return false;
+}
+
+// A mesh's feelers go through its tree as a packet where there are two or more of them;
+// every other shape tests them one by one.
+unsigned Scene::occluded_by_packet(std::uint32_t object, const Ray* feelers, const float* t_max,
+                                   unsigned lanes) const {
+    const Object& o = objects[object];
+    const auto* m = std::get_if<MeshRef>(&o.shape);
+    if (m && std::popcount(lanes) >= 2) {
+        std::array<Ray, kPacketWidth> local;
+        for (unsigned rest = lanes; rest != 0; rest &= rest - 1) {
+            const unsigned lane = __builtin_ctz(rest);
+            if (o.transform)
+                o.transform->to_object(feelers[lane], local[lane]);
+            else
+                local[lane] = feelers[lane];
+        }
+        return meshes[m->mesh].occluded_packet(local.data(), t_max, lanes);
+    }
+    unsigned blocked = 0;
+    for (; lanes != 0; lanes &= lanes - 1) {
+        const unsigned lane = __builtin_ctz(lanes);
+        if (occluded_by(object, feelers[lane], t_max[lane])) blocked |= 1u << lane;
+    }
+    return blocked;
+}
+
+unsigned Scene::occluded_packet(const Ray* feelers, const float* t_max, std::size_t light,
+                                const std::uint32_t* leaving, unsigned active) const {
+    unsigned blocked = 0;
+    for (std::uint32_t i : unbounded_)
+        for (unsigned rest = active & ~blocked; rest != 0; rest &= rest - 1) {
+            const unsigned lane = __builtin_ctz(rest);
+            if (i != leaving[lane] && occluded_by(i, feelers[lane], t_max[lane]))
+                blocked |= 1u << lane;
+        }
+    unsigned rest = active & ~blocked;
+    const std::optional<LightBuffer>& buffer = light_buffers_[light];
+    std::array<LightBuffer::Cell, kPacketWidth> cells;
+    if (buffer) buffer->cells(feelers, rest, cells.data());
+    while (rest != 0) {
+        const unsigned lane = __builtin_ctz(rest);
+        const LightBuffer::Cell cell = cells[lane];
+        if (!cell.crowded && cell.begin == cell.end) {  // an empty cell: nothing to meet
+            rest &= rest - 1;
+            continue;
+        }
+        if (cell.crowded || !finite_ray(feelers[lane])) {  // as occluded() does
+            if (occluded_in_tree(feelers[lane], t_max[lane], leaving[lane])) blocked |= 1u << lane;
+            rest &= rest - 1;
+            continue;
+        }
+        // The feelers of this cell (its list is theirs too) test its objects together.
+        unsigned same = 0;
+        for (unsigned lanes = rest; lanes != 0; lanes &= lanes - 1) {
+            const unsigned k = __builtin_ctz(lanes);
+            if (!cells[k].crowded && cells[k].begin == cell.begin && cells[k].end == cell.end &&
+                finite_ray(feelers[k]))
+                same |= 1u << k;
+        }
+        rest &= ~same;
+        for (const std::uint32_t* slot = cell.begin; slot != cell.end && same != 0; ++slot) {
+            const std::uint32_t object = bounded_[*slot];
+            unsigned lanes = 0;
+            for (unsigned open = same; open != 0; open &= open - 1)
+                if (leaving[__builtin_ctz(open)] != object) lanes |= open & -open;
+            const unsigned hit = occluded_by_packet(object, feelers, t_max, lanes);
+            blocked |= hit;
+            same &= ~hit;
+        }
+    }
+    return blocked;
+}
+
+}  // namespace rt
