@@ -163,7 +163,8 @@ class Scene {
                                      unsigned lanes) const;
 
     bool occluded_by(std::uint32_t object, const Ray& r, float t_max) const;
-    unsigned occluded_by_packet(std::uint32_t object, const Ray* feelers, const float* t_max,
+    unsigned occluded_by_packet(std::uint32_t object, const Ray* feelers,
+                                const RayLanes<kPacketWidth>& as_lanes, const float* t_max,
                                 unsigned lanes) const;
     bool occluded_in_tree(const Ray& feeler, float t_max, std::uint32_t leaving) const;
 

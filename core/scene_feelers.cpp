@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "core/scene.h"
+#include "core/shape_packets.h"
 
 namespace rt {
 
@@ -45,12 +46,36 @@ bool Scene::occluded(const Ray& feeler, float t_max, std::size_t light,
     return false;
 }
 
-// A mesh's feelers go through its tree as a packet where there are two or more of them;
-// every other shape tests them one by one.
-unsigned Scene::occluded_by_packet(std::uint32_t object, const Ray* feelers, const float* t_max,
+namespace {
+
+// An analytic shape's test of the feelers of `lanes` (`world`, in the object's space
+// where it has a transform) on the lanes: each lane's arithmetic is the shape's own
+// (core/shape_packets.h), so each gets the answer it gets alone.
+unsigned analytic_occluded(const Object& o, const RayLanes<kPacketWidth>& world, const float* t_max,
+                           unsigned lanes) {
+    LaneHits<kPacketWidth> out;
+    out.t_max = splat<Lanes<kPacketWidth>::Float>(0.0f);
+    for (unsigned rest = lanes; rest != 0; rest &= rest - 1)
+        out.t_max[__builtin_ctz(rest)] = t_max[__builtin_ctz(rest)];
+    RayLanes<kPacketWidth> moved;
+    if (o.transform) moved = world.to_object(*o.transform);
+    const RayLanes<kPacketWidth>& local = o.transform ? moved : world;
+    return std::visit(
+        Overloaded{[](const MeshRef&) { return 0u; },  // not asked
+                   [&](const auto& shape) { return intersect_lanes(shape, local, lanes, out); }},
+        o.shape);
+}
+
+}  // namespace
+
+// Where there are two or more feelers: a mesh's go through its tree as a packet, another
+// shape's are tested on the lanes. One alone is tested alone.
+unsigned Scene::occluded_by_packet(std::uint32_t object, const Ray* feelers,
+                                   const RayLanes<kPacketWidth>& as_lanes, const float* t_max,
                                    unsigned lanes) const {
     const Object& o = objects[object];
     const auto* m = std::get_if<MeshRef>(&o.shape);
+    if (!m && std::popcount(lanes) >= 2) return analytic_occluded(o, as_lanes, t_max, lanes);
     if (m && std::popcount(lanes) >= 2) {
         std::array<Ray, kPacketWidth> local;
         for (unsigned rest = lanes; rest != 0; rest &= rest - 1) {
@@ -72,13 +97,14 @@ unsigned Scene::occluded_by_packet(std::uint32_t object, const Ray* feelers, con
 
 unsigned Scene::occluded_packet(const Ray* feelers, const float* t_max, std::size_t light,
                                 const std::uint32_t* leaving, unsigned active) const {
+    const RayLanes<kPacketWidth> as_lanes = RayLanes<kPacketWidth>::gather(feelers, active);
     unsigned blocked = 0;
-    for (std::uint32_t i : unbounded_)
-        for (unsigned rest = active & ~blocked; rest != 0; rest &= rest - 1) {
-            const unsigned lane = __builtin_ctz(rest);
-            if (i != leaving[lane] && occluded_by(i, feelers[lane], t_max[lane]))
-                blocked |= 1u << lane;
-        }
+    for (std::uint32_t i : unbounded_) {
+        unsigned lanes = 0;
+        for (unsigned open = active & ~blocked; open != 0; open &= open - 1)
+            if (leaving[__builtin_ctz(open)] != i) lanes |= open & -open;
+        blocked |= occluded_by_packet(i, feelers, as_lanes, t_max, lanes);
+    }
     unsigned rest = active & ~blocked;
     const std::optional<LightBuffer>& buffer = light_buffers_[light];
     std::array<LightBuffer::Cell, kPacketWidth> cells;
@@ -109,7 +135,7 @@ unsigned Scene::occluded_packet(const Ray* feelers, const float* t_max, std::siz
             unsigned lanes = 0;
             for (unsigned open = same; open != 0; open &= open - 1)
                 if (leaving[__builtin_ctz(open)] != object) lanes |= open & -open;
-            const unsigned hit = occluded_by_packet(object, feelers, t_max, lanes);
+            const unsigned hit = occluded_by_packet(object, feelers, as_lanes, t_max, lanes);
             blocked |= hit;
             same &= ~hit;
         }

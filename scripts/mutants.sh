@@ -391,6 +391,14 @@ mutant feeler-packet-mesh-sees-world-rays core/scene_feelers.cpp \
 mutant feeler-packet-skips-the-planes core/scene_feelers.cpp \
     'for (unsigned rest = active & ~blocked; rest != 0;' 'for (unsigned rest = active & ~blocked & 0u; rest != 0;' \
     rt_tests $(unit 'ShadowFeelers.*')
+mutant feeler-packet-shape-lanes-unmoved core/scene_feelers.cpp \
+    'const RayLanes<kPacketWidth>& local = o.transform ? moved : world;' \
+    'const RayLanes<kPacketWidth>& local = world;' \
+    rt_tests $(unit 'ShadowFeelers.*')
+mutant feeler-packet-shape-lanes-unbounded core/scene_feelers.cpp \
+    'out.t_max[__builtin_ctz(rest)] = t_max[__builtin_ctz(rest)];' \
+    'out.t_max[__builtin_ctz(rest)] = kInfinity;' \
+    rt_tests $(unit 'ShadowFeelers.*')
 mutant feeler-lanes-offset-ignores-sign core/vec3_lanes.h \
     '(x < splat<Float>(0.0f) ? -ulps : ulps)' 'ulps' \
     rt_tests $(unit 'ShadeFound.*')
