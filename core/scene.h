@@ -108,7 +108,8 @@ class Scene {
                   std::uint32_t leaving = kNoObject) const;
     // The same for up to kPacketWidth feelers to lights[light] at once (feelers[lane],
     // t_max[lane] and leaving[lane] for each bit of `active`): each gets the answer it
-    // gets alone. Feelers that share a light buffer cell test its meshes as a packet.
+    // gets alone. Feelers that share a light buffer cell test its analytic shapes on SIMD
+    // lanes.
     // Returns the bits of those blocked.
     unsigned occluded_packet(const Ray* feelers, const float* t_max, std::size_t light,
                              const std::uint32_t* leaving, unsigned active) const;

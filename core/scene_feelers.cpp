@@ -68,25 +68,15 @@ unsigned analytic_occluded(const Object& o, const RayLanes<kPacketWidth>& world,
 
 }  // namespace
 
-// Where there are two or more feelers: a mesh's go through its tree as a packet, another
-// shape's are tested on the lanes. One alone is tested alone.
+// Two or more feelers meeting a plane, sphere or triangle are tested on the lanes. A
+// mesh's go through its tree one by one: as a packet they were slower (cornell, whose
+// feelers all start on its one mesh: 6 % of the frame, BENCHMARKS.md).
 unsigned Scene::occluded_by_packet(std::uint32_t object, const Ray* feelers,
                                    const RayLanes<kPacketWidth>& as_lanes, const float* t_max,
                                    unsigned lanes) const {
     const Object& o = objects[object];
-    const auto* m = std::get_if<MeshRef>(&o.shape);
-    if (!m && std::popcount(lanes) >= 2) return analytic_occluded(o, as_lanes, t_max, lanes);
-    if (m && std::popcount(lanes) >= 2) {
-        std::array<Ray, kPacketWidth> local;
-        for (unsigned rest = lanes; rest != 0; rest &= rest - 1) {
-            const unsigned lane = __builtin_ctz(rest);
-            if (o.transform)
-                o.transform->to_object(feelers[lane], local[lane]);
-            else
-                local[lane] = feelers[lane];
-        }
-        return meshes[m->mesh].occluded_packet(local.data(), t_max, lanes);
-    }
+    if (!std::holds_alternative<MeshRef>(o.shape) && std::popcount(lanes) >= 2)
+        return analytic_occluded(o, as_lanes, t_max, lanes);
     unsigned blocked = 0;
     for (; lanes != 0; lanes &= lanes - 1) {
         const unsigned lane = __builtin_ctz(lanes);

@@ -385,9 +385,6 @@ mutant feeler-packet-one-cell-for-all core/scene_feelers.cpp \
 mutant feeler-packet-tests-only-the-left-surface core/scene_feelers.cpp \
     'if (leaving[__builtin_ctz(open)] != object)' 'if (leaving[__builtin_ctz(open)] == object)' \
     rt_tests $(unit 'ShadowFeelers.*')
-mutant feeler-packet-mesh-sees-world-rays core/scene_feelers.cpp \
-    'occluded_packet(local.data(), t_max, lanes)' 'occluded_packet(feelers, t_max, lanes)' \
-    rt_tests $(unit 'ShadowFeelers.*')
 mutant feeler-packet-skips-the-planes core/scene_feelers.cpp \
     'for (unsigned rest = active & ~blocked; rest != 0;' 'for (unsigned rest = active & ~blocked & 0u; rest != 0;' \
     rt_tests $(unit 'ShadowFeelers.*')

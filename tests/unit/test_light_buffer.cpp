@@ -381,9 +381,9 @@ TEST(LightBuffer, CellsAcrossLanesAreEachOriginsOwn) {
 }
 
 // Scene::occluded_packet: each feeler's bit is occluded()'s answer for it alone. The
-// feelers of a group leave neighbouring surface points (they share cells, and a mesh's
-// feelers go through its tree as a packet) or points anywhere in the scene; some are
-// not finite.
+// feelers of a group leave neighbouring surface points (they share cells, whose planes,
+// spheres, moved spheres and triangle they test on the lanes) or points anywhere in the
+// scene; some are not finite.
 TEST(ShadowFeelers, APacketAnswersAsEachFeelerAlone) {
     std::mt19937 rng(34);
     std::uniform_real_distribution<float> jitter(-0.02f, 0.02f);
