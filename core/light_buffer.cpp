@@ -223,23 +223,18 @@ LightBuffer::Cell LightBuffer::grid_cell(const vec3& origin) const {
     return {slots_.data() + r.begin, slots_.data() + r.end, false};
 }
 
-void LightBuffer::cells(const Ray* feelers, unsigned lanes, Cell* out) const {
+void LightBuffer::cells(const RayLanes<kPacketWidth>& feelers, unsigned lanes, Cell* out) const {
     using Float = Lanes<kPacketWidth>::Float;
     if (directional_) {
         for (; lanes != 0; lanes &= lanes - 1)
-            out[__builtin_ctz(lanes)] = grid_cell(feelers[__builtin_ctz(lanes)].origin);
+            out[__builtin_ctz(lanes)] = grid_cell(feelers.lane(__builtin_ctz(lanes)).origin);
         return;
-    }
-    Float x{}, y{}, z{};  // lanes not asked about: no direction, not looked up
-    for (unsigned rest = lanes; rest != 0; rest &= rest - 1) {
-        const unsigned lane = __builtin_ctz(rest);
-        x[lane] = feelers[lane].origin.x;
-        y[lane] = feelers[lane].origin.y;
-        z[lane] = feelers[lane].origin.z;
     }
     // cell's steps, lane by lane: the face of the largest component (ties to the lower
     // axis), its other two in the face's (u, v) order, and the same rounding.
-    x -= splat<Float>(light_.x), y -= splat<Float>(light_.y), z -= splat<Float>(light_.z);
+    const Float x = feelers.origin[0] - splat<Float>(light_.x),
+                y = feelers.origin[1] - splat<Float>(light_.y),
+                z = feelers.origin[2] - splat<Float>(light_.z);
     const Float ax = vabs(x), ay = vabs(y), az = vabs(z);
     const auto on_x = (ax >= ay) & (ax >= az);
     const auto on_y = ~on_x & (ay >= az);

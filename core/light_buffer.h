@@ -28,6 +28,7 @@
 #include "core/aabb.h"
 #include "core/light.h"
 #include "core/ray.h"
+#include "core/ray_lanes.h"
 
 namespace rt {
 
@@ -56,9 +57,9 @@ class LightBuffer {
         bool crowded = true;  // or no direction (origin on the light): traverse instead
     };
     Cell cell(const vec3& origin) const;
-    // cell for the origins of feelers[lane], for each bit of `lanes`, across SIMD lanes
+    // cell for the origins of the feelers' lanes of `lanes`, across SIMD lanes
     // (out[lane]): the same cells, without a division and the face's branches each.
-    void cells(const Ray* feelers, unsigned lanes, Cell* out) const;
+    void cells(const RayLanes<kPacketWidth>& feelers, unsigned lanes, Cell* out) const;
 
     // For the docs and tests: how many cells hold no object, and how many are crowded.
     std::size_t empty_cells() const;

@@ -85,9 +85,9 @@ unsigned Scene::occluded_by_packet(std::uint32_t object, const Ray* feelers,
     return blocked;
 }
 
-unsigned Scene::occluded_packet(const Ray* feelers, const float* t_max, std::size_t light,
-                                const std::uint32_t* leaving, unsigned active) const {
-    const RayLanes<kPacketWidth> as_lanes = RayLanes<kPacketWidth>::gather(feelers, active);
+unsigned Scene::occluded_packet(const Ray* feelers, const RayLanes<kPacketWidth>& as_lanes,
+                                const float* t_max, std::size_t light, const std::uint32_t* leaving,
+                                unsigned active) const {
     unsigned blocked = 0;
     for (std::uint32_t i : unbounded_) {
         unsigned lanes = 0;
@@ -98,7 +98,7 @@ unsigned Scene::occluded_packet(const Ray* feelers, const float* t_max, std::siz
     unsigned rest = active & ~blocked;
     const std::optional<LightBuffer>& buffer = light_buffers_[light];
     std::array<LightBuffer::Cell, kPacketWidth> cells;
-    if (buffer) buffer->cells(feelers, rest, cells.data());
+    if (buffer) buffer->cells(as_lanes, rest, cells.data());
     while (rest != 0) {
         const unsigned lane = __builtin_ctz(rest);
         const LightBuffer::Cell cell = cells[lane];

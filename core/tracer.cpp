@@ -305,8 +305,10 @@ unsigned Tracer::visible_lanes(const PhongInputs& in, const ShadeLanes& towards,
     }
     counts.shadow += static_cast<std::uint64_t>(std::popcount(traced));
     const auto index = static_cast<std::size_t>(&light - scene_.lights.data());
-    const unsigned blocked =
-        scene_.occluded_packet(feelers.data(), limits.data(), index, leaving.data(), traced);
+    const RayLanes<kPacketWidth> as_lanes{{in.origin.x, in.origin.y, in.origin.z},
+                                          {dir.x, dir.y, dir.z}};
+    const unsigned blocked = scene_.occluded_packet(feelers.data(), as_lanes, limits.data(), index,
+                                                    leaving.data(), traced);
     if (recorder_)
         for (unsigned rest = traced; rest != 0; rest &= rest - 1) {
             const int k = __builtin_ctz(rest);

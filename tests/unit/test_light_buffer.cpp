@@ -363,7 +363,8 @@ TEST(LightBuffer, CellsAcrossLanesAreEachOriginsOwn) {
              {all, 0x55u & all, 1u << (first / kPacketWidth % kPacketWidth)}) {
             for (const LightBuffer* buffer : {&point, &*directional}) {
                 std::array<LightBuffer::Cell, kPacketWidth> cells;
-                buffer->cells(feelers.data(), lanes, cells.data());
+                buffer->cells(RayLanes<kPacketWidth>::gather(feelers.data(), lanes), lanes,
+                              cells.data());
                 for (unsigned rest = lanes; rest != 0; rest &= rest - 1) {
                     const unsigned k = static_cast<unsigned>(__builtin_ctz(rest));
                     const LightBuffer::Cell alone = buffer->cell(feelers[k].origin);
@@ -421,8 +422,9 @@ TEST(ShadowFeelers, APacketAnswersAsEachFeelerAlone) {
                     if (group % 17 == 5 && k == 1) rays[k].dir.x = kInfinity;  // not finite
                     active |= 1u << k;
                 }
-                const unsigned packet =
-                    scene.occluded_packet(rays.data(), t_max.data(), l, leaving.data(), active);
+                const unsigned packet = scene.occluded_packet(
+                    rays.data(), RayLanes<kPacketWidth>::gather(rays.data(), active), t_max.data(),
+                    l, leaving.data(), active);
                 EXPECT_EQ(packet & ~active, 0u) << "a bit of a lane not asked about";
                 for (unsigned rest = active; rest != 0; rest &= rest - 1) {
                     const unsigned k = static_cast<unsigned>(__builtin_ctz(rest));
