@@ -107,12 +107,12 @@ class Scene {
     bool occluded(const Ray& feeler, float t_max, std::size_t light,
                   std::uint32_t leaving = kNoObject) const;
     // The same for up to kPacketWidth feelers to lights[light] at once (feelers[lane],
-    // t_max[lane] and leaving[lane] for each bit of `active`; the feelers given both ways,
-    // `as_lanes` too): each gets the answer it gets alone. Their light buffer cells are
+    // t_max[lane] and leaving[lane] for each bit of `active`): each gets the answer it
+    // gets alone. Their light buffer cells are
     // found on SIMD lanes, and two or more feelers meeting a plane, sphere or triangle
     // test it on the lanes. Returns the bits of those blocked.
-    unsigned occluded_packet(const Ray* feelers, const RayLanes<kPacketWidth>& as_lanes,
-                             const float* t_max, std::size_t light, const std::uint32_t* leaving,
+    unsigned occluded_packet(const RayLanes<kPacketWidth>& feelers, const float* t_max,
+                             std::size_t light, const std::uint32_t* leaving,
                              unsigned active) const;
     // The closest hit among `count` objects (indices) for the rays of `lanes` (rays[lane],
     // hits[lane], each within its hits[lane].t): where a ray's closest object is among
@@ -165,9 +165,8 @@ class Scene {
                                      unsigned lanes) const;
 
     bool occluded_by(std::uint32_t object, const Ray& r, float t_max) const;
-    unsigned occluded_by_packet(std::uint32_t object, const Ray* feelers,
-                                const RayLanes<kPacketWidth>& as_lanes, const float* t_max,
-                                unsigned lanes) const;
+    unsigned occluded_by_packet(std::uint32_t object, const RayLanes<kPacketWidth>& feelers,
+                                const float* t_max, unsigned lanes) const;
     bool occluded_in_tree(const Ray& feeler, float t_max, std::uint32_t leaving) const;
 
     Accel top_;                                              // over the bounded objects

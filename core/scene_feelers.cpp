@@ -71,34 +71,39 @@ unsigned analytic_occluded(const Object& o, const RayLanes<kPacketWidth>& world,
 // Two or more feelers meeting a plane, sphere or triangle are tested on the lanes. A
 // mesh's go through its tree one by one: as a packet they were slower (cornell, whose
 // feelers all start on its one mesh: 6 % of the frame, BENCHMARKS.md).
-unsigned Scene::occluded_by_packet(std::uint32_t object, const Ray* feelers,
-                                   const RayLanes<kPacketWidth>& as_lanes, const float* t_max,
-                                   unsigned lanes) const {
+unsigned Scene::occluded_by_packet(std::uint32_t object, const RayLanes<kPacketWidth>& feelers,
+                                   const float* t_max, unsigned lanes) const {
     const Object& o = objects[object];
     if (!std::holds_alternative<MeshRef>(o.shape) && std::popcount(lanes) >= 2)
-        return analytic_occluded(o, as_lanes, t_max, lanes);
+        return analytic_occluded(o, feelers, t_max, lanes);
     unsigned blocked = 0;
     for (; lanes != 0; lanes &= lanes - 1) {
         const unsigned lane = __builtin_ctz(lanes);
-        if (occluded_by(object, feelers[lane], t_max[lane])) blocked |= 1u << lane;
+        if (occluded_by(object, feelers.lane(static_cast<int>(lane)), t_max[lane]))
+            blocked |= 1u << lane;
     }
     return blocked;
 }
 
-unsigned Scene::occluded_packet(const Ray* feelers, const RayLanes<kPacketWidth>& as_lanes,
-                                const float* t_max, std::size_t light, const std::uint32_t* leaving,
+unsigned Scene::occluded_packet(const RayLanes<kPacketWidth>& feelers, const float* t_max,
+                                std::size_t light, const std::uint32_t* leaving,
                                 unsigned active) const {
     unsigned blocked = 0;
     for (std::uint32_t i : unbounded_) {
         unsigned lanes = 0;
         for (unsigned open = active & ~blocked; open != 0; open &= open - 1)
             if (leaving[__builtin_ctz(open)] != i) lanes |= open & -open;
-        blocked |= occluded_by_packet(i, feelers, as_lanes, t_max, lanes);
+        blocked |= occluded_by_packet(i, feelers, t_max, lanes);
     }
     unsigned rest = active & ~blocked;
     const std::optional<LightBuffer>& buffer = light_buffers_[light];
     std::array<LightBuffer::Cell, kPacketWidth> cells;
-    if (buffer) buffer->cells(as_lanes, rest, cells.data());
+    if (buffer) buffer->cells(feelers, rest, cells.data());
+    // finite_ray on the lanes: x * 0 is NaN exactly where x is NaN or infinite.
+    using Float = Lanes<kPacketWidth>::Float;
+    Float sum = splat<Float>(0.0f);
+    for (int a = 0; a < 3; ++a) sum += feelers.origin[a] * 0.0f + feelers.dir[a] * 0.0f;
+    const unsigned finite = bits(sum == splat<Float>(0.0f));
     while (rest != 0) {
         const unsigned lane = __builtin_ctz(rest);
         const LightBuffer::Cell cell = cells[lane];
@@ -106,17 +111,17 @@ unsigned Scene::occluded_packet(const Ray* feelers, const RayLanes<kPacketWidth>
             rest &= rest - 1;
             continue;
         }
-        if (cell.crowded || !finite_ray(feelers[lane])) {  // as occluded() does
-            if (occluded_in_tree(feelers[lane], t_max[lane], leaving[lane])) blocked |= 1u << lane;
+        if (cell.crowded || !((finite >> lane) & 1u)) {  // as occluded() does
+            if (occluded_in_tree(feelers.lane(static_cast<int>(lane)), t_max[lane], leaving[lane]))
+                blocked |= 1u << lane;
             rest &= rest - 1;
             continue;
         }
         // The feelers of this cell (its list is theirs too) test its objects together.
         unsigned same = 0;
-        for (unsigned lanes = rest; lanes != 0; lanes &= lanes - 1) {
+        for (unsigned lanes = rest & finite; lanes != 0; lanes &= lanes - 1) {
             const unsigned k = __builtin_ctz(lanes);
-            if (!cells[k].crowded && cells[k].begin == cell.begin && cells[k].end == cell.end &&
-                finite_ray(feelers[k]))
+            if (!cells[k].crowded && cells[k].begin == cell.begin && cells[k].end == cell.end)
                 same |= 1u << k;
         }
         rest &= ~same;
@@ -125,7 +130,7 @@ unsigned Scene::occluded_packet(const Ray* feelers, const RayLanes<kPacketWidth>
             unsigned lanes = 0;
             for (unsigned open = same; open != 0; open &= open - 1)
                 if (leaving[__builtin_ctz(open)] != object) lanes |= open & -open;
-            const unsigned hit = occluded_by_packet(object, feelers, as_lanes, t_max, lanes);
+            const unsigned hit = occluded_by_packet(object, feelers, t_max, lanes);
             blocked |= hit;
             same &= ~hit;
         }

@@ -293,26 +293,24 @@ unsigned Tracer::visible_lanes(const PhongInputs& in, const ShadeLanes& towards,
     const unsigned traced = lit & ~bits(dot(dir, in.geometric) <= splat<Float>(0.0f));
     const unsigned seen = lit & ~traced & bits(dot(towards, in.geometric) > splat<Float>(0.0f));
     if (traced == 0) return seen;
-    std::array<Ray, kPacketWidth> feelers;
     std::array<std::uint32_t, kPacketWidth> leaving;
     const float t_max = light.type == Light::Type::kPoint ? 1.0f : kInfinity;  // Light::feeler
     std::array<float, kPacketWidth> limits;
     limits.fill(t_max);
     for (unsigned rest = traced; rest != 0; rest &= rest - 1) {
         const int k = __builtin_ctz(rest);
-        feelers[k] = Ray{in.origin.get(k), dir.get(k)};
         leaving[k] = sps[k].cannot_meet_again;
     }
     counts.shadow += static_cast<std::uint64_t>(std::popcount(traced));
     const auto index = static_cast<std::size_t>(&light - scene_.lights.data());
-    const RayLanes<kPacketWidth> as_lanes{{in.origin.x, in.origin.y, in.origin.z},
-                                          {dir.x, dir.y, dir.z}};
-    const unsigned blocked = scene_.occluded_packet(feelers.data(), as_lanes, limits.data(), index,
-                                                    leaving.data(), traced);
+    const RayLanes<kPacketWidth> feelers{{in.origin.x, in.origin.y, in.origin.z},
+                                         {dir.x, dir.y, dir.z}};
+    const unsigned blocked =
+        scene_.occluded_packet(feelers, limits.data(), index, leaving.data(), traced);
     if (recorder_)
         for (unsigned rest = traced; rest != 0; rest &= rest - 1) {
             const int k = __builtin_ctz(rest);
-            record_feeler(feelers[k], t_max, light, ((blocked >> k) & 1u) != 0);
+            record_feeler(feelers.lane(k), t_max, light, ((blocked >> k) & 1u) != 0);
         }
     return seen | (traced & ~blocked);
 }

@@ -380,13 +380,13 @@ mutant light-buffer-lanes-ties-to-y core/light_buffer.cpp \
     'const auto on_x = (ax >= ay) & (ax >= az);' 'const auto on_x = (ax > ay) & (ax >= az);' \
     rt_tests $(unit 'LightBuffer.*')
 mutant feeler-packet-one-cell-for-all core/scene_feelers.cpp \
-    'cells[k].begin == cell.begin && cells[k].end == cell.end &&' '' \
+    'cells[k].begin == cell.begin && cells[k].end == cell.end)' 'true)' \
     rt_tests $(unit 'ShadowFeelers.*')
 mutant feeler-packet-tests-only-the-left-surface core/scene_feelers.cpp \
     'if (leaving[__builtin_ctz(open)] != object)' 'if (leaving[__builtin_ctz(open)] == object)' \
     rt_tests $(unit 'ShadowFeelers.*')
 mutant feeler-packet-skips-the-planes core/scene_feelers.cpp \
-    'blocked |= occluded_by_packet(i, feelers, as_lanes, t_max, lanes);' '(void)lanes;' \
+    'blocked |= occluded_by_packet(i, feelers, t_max, lanes);' '(void)lanes;' \
     rt_tests $(unit 'ShadowFeelers.*')
 mutant feeler-packet-shape-lanes-unmoved core/scene_feelers.cpp \
     'const RayLanes<kPacketWidth>& local = o.transform ? moved : world;' \

@@ -422,9 +422,9 @@ TEST(ShadowFeelers, APacketAnswersAsEachFeelerAlone) {
                     if (group % 17 == 5 && k == 1) rays[k].dir.x = kInfinity;  // not finite
                     active |= 1u << k;
                 }
-                const unsigned packet = scene.occluded_packet(
-                    rays.data(), RayLanes<kPacketWidth>::gather(rays.data(), active), t_max.data(),
-                    l, leaving.data(), active);
+                const unsigned packet =
+                    scene.occluded_packet(RayLanes<kPacketWidth>::gather(rays.data(), active),
+                                          t_max.data(), l, leaving.data(), active);
                 EXPECT_EQ(packet & ~active, 0u) << "a bit of a lane not asked about";
                 for (unsigned rest = active; rest != 0; rest &= rest - 1) {
                     const unsigned k = static_cast<unsigned>(__builtin_ctz(rest));
