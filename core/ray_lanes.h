@@ -16,6 +16,7 @@ namespace detail {
 
 // Lane k of the result is base[(lane k of `lanes`, else the first of them) * stride]: a
 // field of an array of records as lanes, the lanes not asked for repeating the first.
+// `lanes` holds at least one bit (the first of none is undefined).
 // Lane by lane: AVX2's gather instruction was slower here (the item buffer's primary
 // step 5 to 10 %, and the same in the camera packets' plane test).
 template <int N>
@@ -36,8 +37,8 @@ struct RayLanes {
     using Float = typename Lanes<N>::Float;
     Float origin[3], dir[3];  // every lane written by whoever makes one
 
-    // rays[lane] for each bit of `lanes`; the other lanes copy the first of them (real
-    // numbers, so no lane computes a NaN or a trap).
+    // rays[lane] for each bit of `lanes` (one or more); the other lanes copy the first of
+    // them (real numbers, so no lane computes a NaN or a trap).
     static RayLanes gather(const Ray* rays, unsigned lanes) {
         static_assert(sizeof(Ray) == 6 * sizeof(float));
         RayLanes out;

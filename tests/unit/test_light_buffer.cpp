@@ -422,6 +422,7 @@ TEST(ShadowFeelers, APacketAnswersAsEachFeelerAlone) {
                     if (group % 17 == 5 && k == 1) rays[k].dir.x = kInfinity;  // not finite
                     active |= 1u << k;
                 }
+                if (active == 0) continue;  // no feeler: occluded_packet asks for one or more
                 const unsigned packet =
                     scene.occluded_packet(RayLanes<kPacketWidth>::gather(rays.data(), active),
                                           t_max.data(), l, leaving.data(), active);
