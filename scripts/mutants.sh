@@ -271,7 +271,7 @@ mutant light-on-surface-nan core/tracer.cpp \
     'if (!(distance > 0.0f) || !std::isfinite(distance)) continue;' '' \
     rt_tests $(unit 'Phong.*')
 mutant near-light-behind-offset-dark core/tracer.cpp \
-    'return glm::dot(from_surface, sp.geometric_normal) > 0.0f;' 'return false;' \
+    'return glm::dot(from_surface, sp.geometric_normal) > 0.0f ?' 'return false ?' \
     rt_tests $(unit 'Far.*:Shadows.*')
 mutant egl-display-terminated-early app/gl/context_egl.cpp \
     'display_refs().release(display_);' 'eglTerminate(display_);' \

@@ -108,6 +108,46 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitWhereLightsMisbehave) {
     expect_lanes_as_alone(Scene(std::move(desc)), TraceOptions{});
 }
 
+// Bounces many deep: two mirrors facing each other, a glass ball inside another (media
+// nested), glass seen from inside past the critical angle (total internal reflection in
+// the refracted ray's place), a weight limit that stops some paths early and none at all.
+TEST(ShadeFound, EachLaneIsShadeHitBitForBitDepthAfterDepth) {
+    SceneDescription desc;
+    desc.camera = Camera::look_at({0.3f, 2.5f, 7}, {0, 1, 0}, {0, 1, 0}, 55.0f, 48, 36);
+    desc.ambient = vec3(0.1f);
+    Material floor = test::plain(vec3(0.3f), vec3(0.6f), vec3(0.2f), 12.0f);
+    floor.checker = Checker{vec3(0.9f, 0.1f, 0.1f), vec3(0.9f, 0.9f, 0.2f), 0.5f};
+    floor.reflectivity = 0.3f;
+    Material mirror = test::plain(vec3(0.0f), vec3(0.05f), vec3(0.8f), 200.0f);
+    mirror.reflectivity = 0.9f;
+    Material glass = test::plain(vec3(0.0f), vec3(0.02f), vec3(0.9f), 300.0f);
+    glass.reflectivity = 0.1f;
+    glass.transparency = 0.85f;
+    glass.ior = 1.5f;
+    Material dense = glass;
+    dense.ior = 2.4f;
+    desc.materials = {floor, mirror, glass, dense};
+    desc.objects.push_back(Object{"floor", Plane{{0, 1, 0}, 0}, 0, {}});
+    desc.objects.push_back(Object{"left mirror", Plane{{1, 0, 0}, -3.0f}, 1, {}});
+    desc.objects.push_back(Object{"right mirror", Plane{{-1, 0, 0}, -3.0f}, 1, {}});
+    desc.objects.push_back(Object{"outer", Sphere{{0, 1.2f, 0}, 1.1f}, 2, {}});
+    desc.objects.push_back(Object{"inner", Sphere{{0.1f, 1.2f, 0.1f}, 0.5f}, 3, {}});
+    desc.objects.push_back(Object{"ball", Sphere{{-1.8f, 0.5f, -1}, 0.5f}, 1, {}});
+    desc.lights.push_back(Light{Light::Type::kPoint, {2, 6, 4}, {}, vec3(0.8f)});
+    desc.lights.push_back(
+        Light{Light::Type::kDirectional, {}, glm::normalize(vec3(-1, -2, -1)), vec3(0.3f)});
+    const Scene scene(std::move(desc));
+    for (const float min_weight : {0.0f, 0.05f}) {
+        TraceOptions options;
+        options.max_depth = 7;
+        options.min_weight = min_weight;
+        expect_lanes_as_alone(scene, options);
+    }
+    TraceOptions reflections_only;
+    reflections_only.refractions = false;
+    expect_lanes_as_alone(scene, reflections_only);
+}
+
 // A ball a thousand units across, its top seen from near by, lit by lights that graze
 // it: a feeler leaving its surface cannot meet it again (it is convex), but tested
 // against it, a quarter of them would, float's rounding giving hits at tiny t. Nothing
