@@ -28,7 +28,11 @@ void write_image(const Image& image, const std::filesystem::path& path) {
 
     bool ok = false;
     if (lower_extension(path) == ".png") {
-        const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+        OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+        // One row filter (libpng's PNG_FILTER_SUB), not libpng's trial of all five on every
+        // row: half the encoder's instructions for a 1280 x 720 frame (451 M -> 223 M), and
+        // files as small (the golden images: 0.99 x in all; docs/BENCHMARKS.md).
+        spec.attribute("png:filter", 0x10);
         const std::vector<std::uint8_t> bytes = to_srgb8(image);
         ok = out->open(file, spec) && out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
     } else {

@@ -73,6 +73,16 @@ mutant refraction-indices-swapped core/tracer.cpp \
 mutant tir-black core/tracer.cpp \
     'return reflected(r, sp, mirrored, counts);' 'return vec3(0.0f);' \
     rt_tests $(unit 'Refraction*')
+# The sRGB bytes of a PNG (core/image.cpp's table): the formula's, bit for bit.
+mutant srgb8-bucket-next-ignored core/image.cpp \
+    'b.byte + (c >= b.next ? 1u : 0u)' 'b.byte' \
+    rt_tests $(unit 'Image.*')
+mutant srgb8-boundary-float-rounds-down core/image.cpp \
+    'b.byte + (c >= b.next ? 1u : 0u)' 'b.byte + (c > b.next ? 1u : 0u)' \
+    rt_tests $(unit 'Image.*')
+mutant srgb8-bisection-skips-a-float core/image.cpp \
+    'lo = mid + 1;' 'lo = mid + 2;' \
+    rt_tests $(unit 'Image.*')
 mutant compare-counts-nothing core/compare.cpp \
     'd.pixels_over += largest > threshold;' 'd.pixels_over += 0;' \
     rt_tests $(unit 'Compare.*')

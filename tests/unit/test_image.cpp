@@ -1,6 +1,12 @@
 // Image files through OpenImageIO: orientation, sRGB encoding, EXR linear floats.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
 #include "core/error.h"
 #include "core/image.h"
 #include "test_util.h"
@@ -24,6 +30,38 @@ TEST(Image, SrgbTransferFunction) {
     EXPECT_NEAR(srgb_encode(0.002f), 0.002f * 12.92f, 1e-7f);  // the linear toe
     EXPECT_FLOAT_EQ(srgb_encode(7.0f), 1.0f);                  // clamped
     for (float x = 0.0f; x <= 1.0f; x += 0.05f) EXPECT_NEAR(srgb_decode(srgb_encode(x)), x, 1e-5f);
+}
+
+// srgb8, the table that writes PNGs, is lround(255 srgb_encode(c)) bit for bit: over a
+// sample of all the floats of [0, 1] (where the formula must never fall, which the table
+// relies on), a few thousand floats either side of each byte's boundary, and outside [0, 1].
+TEST(Image, Srgb8IsTheFormulaBitForBit) {
+    const auto formula = [](float c) {
+        return static_cast<int>(std::lround(srgb_encode(c) * 255.0f));
+    };
+    int differing = 0, falling = 0, last = 0;
+    for (std::uint32_t b = 0; b <= std::bit_cast<std::uint32_t>(1.0f); b += 97) {
+        const float c = std::bit_cast<float>(b);
+        const int f = formula(c);
+        differing += srgb8(c) != f;
+        falling += f < last;
+        last = f;
+    }
+    for (int v = 1; v < 256; ++v) {
+        const float boundary = srgb_decode((static_cast<float>(v) - 0.5f) / 255.0f);
+        const auto at = static_cast<std::int64_t>(std::bit_cast<std::uint32_t>(boundary));
+        for (std::int64_t b = std::max<std::int64_t>(0, at - 3000); b <= at + 3000; ++b) {
+            const float c = std::bit_cast<float>(static_cast<std::uint32_t>(b));
+            differing += srgb8(c) != formula(c);
+        }
+    }
+    EXPECT_EQ(differing, 0);
+    EXPECT_EQ(falling, 0);
+    for (const float c : {-1.0f, -0.0f, 1e-45f, 1.0f, 1.0000001f, 7.0f, 3.0e38f,
+                          std::numeric_limits<float>::infinity()})
+        EXPECT_EQ(srgb8(c), formula(c)) << c;
+    EXPECT_EQ(srgb8(-std::numeric_limits<float>::infinity()), 0);
+    EXPECT_EQ(srgb8(std::numeric_limits<float>::quiet_NaN()), 0);
 }
 
 TEST(Image, PngIsSrgbWithTheBottomRowLast) {
