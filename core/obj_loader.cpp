@@ -174,14 +174,20 @@ struct ObjCounts {
     long long vertices = 0;
 };
 
+bool is_space(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
+}
+
 // The next whitespace-separated token of `rest` (as `>>` would read it), which is left
 // after it; empty at the end. Without a stream per line: with one, checking the bunny's
 // 200k lines cost more than tinyobjloader's parse of them (callgrind: 443 M against
-// 251 M instructions).
+// 251 M instructions). A character at a time: find_first_of with the set of six spaces
+// looked each character up in the set (a memchr each: 50 M of the check's 139 M).
 std::string_view next_token(std::string_view& rest) {
-    constexpr std::string_view kSpace = " \t\n\v\f\r";
-    const std::size_t begin = std::min(rest.find_first_not_of(kSpace), rest.size());
-    const std::size_t end = std::min(rest.find_first_of(kSpace, begin), rest.size());
+    std::size_t begin = 0;
+    while (begin < rest.size() && is_space(rest[begin])) ++begin;
+    std::size_t end = begin;
+    while (end < rest.size() && !is_space(rest[end])) ++end;
     const std::string_view token = rest.substr(begin, end - begin);
     rest.remove_prefix(end);
     return token;
