@@ -83,6 +83,19 @@ mutant srgb8-boundary-float-rounds-down core/image.cpp \
 mutant srgb8-bisection-skips-a-float core/image.cpp \
     'lo = mid + 1;' 'lo = mid + 2;' \
     rt_tests $(unit 'Image.*')
+# The item buffer's packed ids (app/gl/framebuffer.h, IdLayout).
+mutant packed-ids-mask-one-bit-short app/gl/framebuffer.cpp \
+    'prim[i] = words[i] & mask;' 'prim[i] = words[i] & (mask >> 1);' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*PackedIds*'
+mutant packed-ids-unmasked-in-shader shaders/itembuffer.frag \
+    '(prim & ((1u << u_prim_bits) - 1u))' 'prim' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*PackedIds*'
+mutant packed-ids-shown-unshifted shaders/present.frag \
+    'texture(u_ids, uv).r >> u_ids_shift;' 'texture(u_ids, uv).r;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*ItemView*'
+mutant packed-ids-picked-unshifted app/gl/framebuffer.cpp \
+    'return id >> ids_.shader_prim_bits();' 'return id;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*PackedIds*'
 mutant compare-counts-nothing core/compare.cpp \
     'd.pixels_over += largest > threshold;' 'd.pixels_over += 0;' \
     rt_tests $(unit 'Compare.*')

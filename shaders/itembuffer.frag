@@ -4,11 +4,18 @@
 
 uniform uint u_object_id;  // object index + 1; 0 is left for "nothing"
 uniform uint u_prim_base;  // the draw's first triangle within the object's mesh
+// > 0: the ids packed into o_object, the object id above this many bits of the triangle
+// (app/gl/framebuffer.h, IdLayout; the layout keeps every mesh's triangles below them,
+// and a tessellated sphere's or plane's, which nothing reads, are cut to fit)
+uniform uint u_prim_bits;
 
 layout(location = 0) out uint o_object;
 layout(location = 1) out uint o_prim;
 
 void main() {
-    o_object = u_object_id;
-    o_prim = u_prim_base + uint(gl_PrimitiveID);
+    uint prim = u_prim_base + uint(gl_PrimitiveID);
+    o_object = u_prim_bits == 0u
+                   ? u_object_id
+                   : (u_object_id << u_prim_bits) | (prim & ((1u << u_prim_bits) - 1u));
+    o_prim = prim;
 }

@@ -17,6 +17,7 @@
 uniform sampler2D u_raster;
 uniform sampler2D u_traced;
 uniform usampler2D u_ids;
+uniform uint u_ids_shift;     // the ids' packed triangle bits (0: object ids alone)
 uniform sampler2D u_heat;     // core's heat_colour(t), 256 texels
 uniform sampler2D u_palette;  // core's item_colour(id), one texel per id
 uniform sampler2D u_explain;  // core's explain_colours: each pixel its cause's colour
@@ -65,7 +66,7 @@ void main() {
 #endif
     }
 #elif VIEW == 4
-    uint id = texture(u_ids, uv).r;
+    uint id = texture(u_ids, uv).r >> u_ids_shift;
     int index = int(id % uint(u_palette_size));
     vec3 colour = srgb_encode(texelFetch(u_palette, ivec2(index, 0), 0).rgb);
 #else

@@ -54,6 +54,7 @@ void Compositor::draw(const CompositeInputs& in, int width, int height) {
     program.set("u_diff_scale", std::max(in.diff_scale, 1e-4f));
     program.set("u_diff_threshold", in.diff_threshold);
     program.set("u_palette_size", palette_.width());
+    program.set("u_ids_shift", in.item_buffer_shift);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(vao_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -22,11 +22,12 @@ enum class DiffMode {
 };
 
 struct CompositeInputs {
-    GLuint raster = 0;       // RGBA32F, linear
-    GLuint traced = 0;       // RGB32F, linear, any resolution (coarse while moving)
-    GLuint item_buffer = 0;  // R32UI object ids
-    GLuint explain = 0;      // RGB32F, linear: core's explain map in colour (the why view)
-    GLuint overlay = 0;      // RGBA32F, linear, over any view (a picked pixel's rays), or 0
+    GLuint raster = 0;               // RGBA32F, linear
+    GLuint traced = 0;               // RGB32F, linear, any resolution (coarse while moving)
+    GLuint item_buffer = 0;          // R32UI object ids, shifted up by item_buffer_shift bits
+    unsigned item_buffer_shift = 0;  // the target's IdLayout::shader_prim_bits()
+    GLuint explain = 0;              // RGB32F, linear: core's explain map in colour (the why view)
+    GLuint overlay = 0;              // RGBA32F, linear, over any view (a picked pixel's rays), or 0
     View view = View::kSplit;
     float divider = 0.5f;     // split: the divider's x as a share of the width
     bool swap = false;        // split: traced on the left

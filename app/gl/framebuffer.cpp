@@ -1,6 +1,7 @@
 #include "app/gl/framebuffer.h"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,12 +19,20 @@ void require_complete(const char* what) {
 }
 }  // namespace
 
-Framebuffer::Framebuffer(Kind kind, int width, int height, int samples, bool triangle_ids)
+IdLayout IdLayout::for_scene(std::size_t objects, std::size_t most_triangles) {
+    if (most_triangles == 0) return {Kind::kObjectsOnly, 0};
+    const int prim_bits = 32 - static_cast<int>(std::bit_width(objects));
+    if (prim_bits >= 1 && most_triangles <= (std::uint64_t{1} << prim_bits))
+        return {Kind::kPacked, prim_bits};
+    return {Kind::kSeparate, 0};
+}
+
+Framebuffer::Framebuffer(Kind kind, int width, int height, int samples, IdLayout ids)
     : kind_(kind),
       width_(width),
       height_(height),
       samples_(kind == Kind::kColour ? std::max(1, samples) : 1),
-      triangle_ids_(triangle_ids),
+      ids_(ids),
       fbo_(make_framebuffer()) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
     const int attachments = kind == Kind::kColourAndIds ? 3 : (kind == Kind::kItemBuffer ? 2 : 1);
@@ -77,8 +86,8 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples, bool tri
         ids_pbo_ = make_buffer();
         glBindBuffer(GL_PIXEL_PACK_BUFFER, ids_pbo_.get());
         glBufferData(GL_PIXEL_PACK_BUFFER,
-                     static_cast<GLsizeiptr>(width) * height * (triangle_ids ? 8 : 4), nullptr,
-                     GL_STREAM_READ);
+                     static_cast<GLsizeiptr>(width) * height * (ids.second_target() ? 8 : 4),
+                     nullptr, GL_STREAM_READ);
         glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     }
     check("Framebuffer");
@@ -98,7 +107,8 @@ void Framebuffer::draw_ids(bool on) const {
     const int ids = id_attachment();
     GLenum draw[3] = {ids == 1 ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE}, GL_NONE, GL_NONE};
     if (on) draw[ids] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(ids);
-    if (on && triangle_ids_) draw[ids + 1] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(ids + 1);
+    if (on && ids_.second_target())
+        draw[ids + 1] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(ids + 1);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_.get());
     glDrawBuffers(ids + 2, draw);
 }
@@ -115,7 +125,7 @@ void Framebuffer::bind() const {
     if (kind_ == Kind::kItemBuffer || kind_ == Kind::kColourAndIds) {
         const GLuint zero[4] = {0, 0, 0, 0};
         glClearBufferuiv(GL_COLOR, id_attachment(), zero);
-        if (triangle_ids_) glClearBufferuiv(GL_COLOR, id_attachment() + 1, zero);
+        if (ids_.second_target()) glClearBufferuiv(GL_COLOR, id_attachment() + 1, zero);
     }
 }
 
@@ -151,20 +161,20 @@ std::uint32_t Framebuffer::read_id(int x, int y) const {
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(x, y, 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &id);
     check("read_id");
-    return id;
+    return id >> ids_.shader_prim_bits();
 }
 
 ItemBuffer Framebuffer::read_item_buffer() const { return start_item_buffer_read().finish(); }
 
-// Both attachments into one buffer, objects then triangles: glReadPixels into a bound
-// pixel-pack buffer returns at once on a GPU, the copy going on while the CPU works.
+// The id attachments into one buffer, objects then any triangles: glReadPixels into a
+// bound pixel-pack buffer returns at once on a GPU, the copy going on while the CPU works.
 Framebuffer::ItemBufferRead Framebuffer::start_item_buffer_read() const {
-    const ItemBufferRead read(width_, height_, ids_pbo_.get(), triangle_ids_);
+    const ItemBufferRead read(width_, height_, ids_pbo_.get(), ids_);
     const auto bytes = static_cast<GLsizeiptr>(width_) * height_ * 4;
     glBindBuffer(GL_PIXEL_PACK_BUFFER, ids_pbo_.get());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    for (int k = 0; k < (triangle_ids_ ? 2 : 1); ++k) {
+    for (int k = 0; k < (ids_.second_target() ? 2 : 1); ++k) {
         glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(id_attachment() + k));
         glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT,
                      reinterpret_cast<void*>(static_cast<std::uintptr_t>(k * bytes)));
@@ -184,16 +194,32 @@ void Framebuffer::ItemBufferRead::finish(ItemBuffer& ib) {
     ib.resize(width_, height_);
     const std::size_t count = ib.object.size();
     glBindBuffer(GL_PIXEL_PACK_BUFFER, pbo_);
-    const std::size_t targets = triangles_ ? 2 : 1;
+    const std::size_t targets = ids_.second_target() ? 2 : 1;
     const void* data = glMapBufferRange(
         GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(targets * count * 4), GL_MAP_READ_BIT);
     if (data) {
         const auto* words = static_cast<const std::uint32_t*>(data);
-        std::copy(words, words + count, ib.object.begin());
-        if (triangles_)
-            std::copy(words + count, words + 2 * count, ib.prim.begin());
-        else
-            std::fill(ib.prim.begin(), ib.prim.end(), 0u);
+        switch (ids_.kind) {
+            case IdLayout::Kind::kSeparate:
+                std::copy(words, words + count, ib.object.begin());
+                std::copy(words + count, words + 2 * count, ib.prim.begin());
+                break;
+            case IdLayout::Kind::kPacked: {
+                const int bits = ids_.prim_bits;
+                const std::uint32_t mask = (std::uint32_t{1} << bits) - 1u;
+                std::uint32_t* object = ib.object.data();
+                std::uint32_t* prim = ib.prim.data();
+                for (std::size_t i = 0; i < count; ++i) {
+                    object[i] = words[i] >> bits;
+                    prim[i] = words[i] & mask;
+                }
+                break;
+            }
+            case IdLayout::Kind::kObjectsOnly:
+                std::copy(words, words + count, ib.object.begin());
+                std::fill(ib.prim.begin(), ib.prim.end(), 0u);
+                break;
+        }
         glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
     }
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);

@@ -2,12 +2,35 @@
 // Off-screen render targets at the tracer's resolution, and their read-back into
 // core's plain data (rt::Image, rt::ItemBuffer), bottom row first like GL.
 
+#include <cstddef>
+#include <cstdint>
+
 #include "app/gl/gl.h"
 #include "app/gl/handle.h"
 #include "core/image.h"
 #include "core/item_buffer.h"
 
 namespace rt::gl {
+
+// How a target holds the item buffer's two ids. Objects only: a scene without a mesh
+// (only a mesh's pixels need their triangle; the read-back names triangle 0 everywhere).
+// Packed: one R32UI target of (object id << prim_bits) | triangle, where every mesh's
+// triangles fit below the bits the object ids need: one target written, cleared and read
+// instead of two. Separate: a second R32UI target of triangle indices, where they do not
+// fit. The shaders take prim_bits (0 unless packed) as u_prim_bits.
+struct IdLayout {
+    enum class Kind { kObjectsOnly, kPacked, kSeparate };
+    Kind kind = Kind::kSeparate;
+    int prim_bits = 0;  // kPacked: the triangle's share of the 32 bits
+
+    // For a scene of `objects` objects (ids 1 to objects) whose largest mesh has
+    // `most_triangles` triangles (0: no mesh).
+    static IdLayout for_scene(std::size_t objects, std::size_t most_triangles);
+    bool second_target() const { return kind == Kind::kSeparate; }
+    std::uint32_t shader_prim_bits() const {
+        return kind == Kind::kPacked ? static_cast<std::uint32_t>(prim_bits) : 0u;
+    }
+};
 
 class Framebuffer {
   public:
@@ -21,15 +44,15 @@ class Framebuffer {
 
     // `samples` > 1 (colour only): drawn multisampled, into renderbuffers; resolve()
     // averages the samples into the texture that texture() and the reads see.
-    // Without `triangle_ids` (a scene with no mesh: only a mesh's pixels need their
-    // triangle) the triangle attachment is neither drawn, cleared nor read, and the item
-    // buffer read back names triangle 0 everywhere: on llvmpipe the second id target cost
-    // many_spheres' raster frame about 1.5 ms.
-    Framebuffer(Kind kind, int width, int height, int samples = 1, bool triangle_ids = true);
+    // Unless `ids` has a second target, the triangle attachment is neither drawn, cleared
+    // nor read: on llvmpipe the second id target cost many_spheres' raster frame about
+    // 1.5 ms.
+    Framebuffer(Kind kind, int width, int height, int samples = 1, IdLayout ids = {});
 
     int width() const { return width_; }
     int height() const { return height_; }
     int samples() const { return samples_; }
+    const IdLayout& ids() const { return ids_; }
     void resolve() const;  // after drawing; nothing to do with one sample
     // The colour attachments are textures, so a later pass can sample them.
     GLuint texture(int attachment = 0) const { return colour_[attachment].get(); }
@@ -52,14 +75,15 @@ class Framebuffer {
 
       private:
         friend class Framebuffer;
-        ItemBufferRead(int width, int height, GLuint pbo, bool triangles)
-            : width_(width), height_(height), pbo_(pbo), triangles_(triangles) {}
+        ItemBufferRead(int width, int height, GLuint pbo, IdLayout ids)
+            : width_(width), height_(height), pbo_(pbo), ids_(ids) {}
         int width_, height_;
         GLuint pbo_;
-        bool triangles_;
+        IdLayout ids_;
     };
     ItemBufferRead start_item_buffer_read() const;
-    // One pixel (x, y from the bottom left): a colour, or an item buffer's object id + 1.
+    // One pixel (x, y from the bottom left): a colour, or an item buffer's object id + 1
+    // (unpacked).
     vec3 read_pixel(int x, int y) const;
     std::uint32_t read_id(int x, int y) const;
 
@@ -68,13 +92,13 @@ class Framebuffer {
 
     Kind kind_;
     int width_, height_, samples_;
-    bool triangle_ids_;
+    IdLayout ids_;
     FramebufferHandle fbo_;
     TextureHandle colour_[3];
     RenderbufferHandle depth_;
     FramebufferHandle ms_fbo_;  // samples > 1: what is drawn into
     RenderbufferHandle ms_colour_, ms_depth_;
-    BufferHandle ids_pbo_;  // the item buffer's read-back (both ids: objects, then triangles)
+    BufferHandle ids_pbo_;  // the item buffer's read-back (objects, then any triangles)
 };
 
 }  // namespace rt::gl

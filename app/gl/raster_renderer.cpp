@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include <variant>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -12,6 +13,17 @@
 
 namespace rt::gl {
 
+namespace {
+// The largest mesh any object draws, in triangles (0: no mesh): what the ids must hold.
+std::size_t most_mesh_triangles(const Scene& scene) {
+    std::size_t most = 0;
+    for (const Object& o : scene.objects)
+        if (const auto* ref = std::get_if<MeshRef>(&o.shape))
+            most = std::max({most, scene.meshes[ref->mesh].triangles.size(), std::size_t{1}});
+    return most;
+}
+}  // namespace
+
 RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& shaders)
     : scene_(scene),
       gpu_(scene),
@@ -19,9 +31,7 @@ RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& 
       ids_(shaders / "raster.vert", shaders / "itembuffer.frag"),
       wire_(shaders / "raster.vert", shaders / "wire.frag"),
       shadow_(shaders / "raster.vert", shaders / "shadow.frag"),
-      triangle_ids_(std::any_of(scene.objects.begin(), scene.objects.end(), [](const Object& o) {
-          return std::holds_alternative<MeshRef>(o.shape);
-      })) {
+      id_layout_(IdLayout::for_scene(scene.objects.size(), most_mesh_triangles(scene))) {
     for (const rt::Texture& t : scene.textures) textures_.emplace_back().upload_surface(t);
     phong(false, false);  // a shader that does not compile fails here, not at the first frame
 }
@@ -96,6 +106,7 @@ void RasterRenderer::draw_scene(const Camera& camera, int skip, const CubeAtlas*
     set_shadow_uniforms();
     set_environment_uniforms(env);
     phong_->set("u_ambient", scene_.ambient);
+    phong_->set("u_prim_bits", id_layout_.shader_prim_bits());
     const int lights = std::min(static_cast<int>(scene_.lights.size()), kMaxLights);
     phong_->set("u_light_count", lights);
     for (int i = 0; i < lights; ++i) {
@@ -165,6 +176,7 @@ void RasterRenderer::draw_wires(const std::vector<DrawItem>& items, const Camera
 
 void RasterRenderer::draw_ids(const Camera& camera) {
     set_camera(ids_, camera);
+    ids_.set("u_prim_bits", id_layout_.shader_prim_bits());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
@@ -182,8 +194,14 @@ Framebuffer& RasterRenderer::target(std::optional<Framebuffer>& fb, Framebuffer:
                                     const Camera& camera, int samples) {
     if (!fb || fb->width() != camera.cols || fb->height() != camera.rows ||
         fb->samples() != samples)
-        fb.emplace(kind, camera.cols, camera.rows, samples, triangle_ids_);
+        fb.emplace(kind, camera.cols, camera.rows, samples, id_layout_);
     return *fb;
+}
+
+void RasterRenderer::set_id_layout(IdLayout layout) {
+    id_layout_ = layout;
+    id_target_.reset();
+    shared_target_.reset();
 }
 
 const Framebuffer& RasterRenderer::render_to_texture(const Camera& camera, bool with_ids) {

@@ -54,6 +54,11 @@ class RasterRenderer {
     Frame render_with_item_buffer(const Camera& camera);
     void render_with_item_buffer(const Camera& camera, Frame& into);
 
+    // How the targets hold the ids: IdLayout::for_scene unless set (the GL tests compare
+    // the layouts); setting it drops the targets, made again at the next pass.
+    const IdLayout& id_layout() const { return id_layout_; }
+    void set_id_layout(IdLayout layout);
+
     // Multisample anti-aliasing of the colour pass (1, 2, 4 or 8 samples; 1: none). The
     // item buffer stays one sample a pixel: an object id cannot be averaged.
     void set_msaa(int samples) { msaa_ = samples; }
@@ -115,7 +120,7 @@ class RasterRenderer {
     std::optional<Framebuffer> id_target_;
     std::optional<Framebuffer> shared_target_;  // colour and ids from one draw
     const Framebuffer* drawing_ids_ = nullptr;  // the bound target, where it is shared_target_
-    bool triangle_ids_;                         // the scene has a mesh (Framebuffer's ctor)
+    IdLayout id_layout_;                        // Framebuffer's ctor and the shaders' u_prim_bits
     int msaa_ = 1;
     bool shadow_maps_ = false;
     int shadow_size_ = 1024;

@@ -347,8 +347,10 @@ void Viewer::draw_views(int width, int height) {
                                ? controller_->camera(traced_image_.width, traced_image_.height)
                                : controller_->camera(width, height));
     }
-    if (in.view == View::kItemBuffer)
+    if (in.view == View::kItemBuffer) {
         in.item_buffer = item_buffer_texture(controller_->camera(width, height));
+        in.item_buffer_shift = ids_fb_->ids().shader_prim_bits();
+    }
     if (!rays_->empty()) in.overlay = rays_->texture(*raster_, controller_->camera(width, height));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);

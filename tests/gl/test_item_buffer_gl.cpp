@@ -4,12 +4,19 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <string>
 #include <utility>
 #include <variant>
+#include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "../unit/test_util.h"
+#include "app/gl/compositor.h"
 #include "app/gl/raster_renderer.h"
 #include "core/compare.h"
+#include "core/image.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
 #include "gl_fixture.h"
@@ -160,6 +167,115 @@ TEST_P(GlItemBuffer, AFrameReadIntoAnEarlierFramesStorageIsTheFreshFrame) {
         EXPECT_TRUE(reused.ids.object == dedicated.object) << cols << " x " << rows;
         EXPECT_TRUE(reused.ids.prim == dedicated.prim) << cols << " x " << rows;
     }
+}
+
+// The ids' layout: packed wherever the object ids and the largest mesh's triangles fit
+// in 32 bits together, objects alone without a mesh, two targets otherwise.
+TEST(IdLayout, PacksWhereObjectsAndTrianglesFitInOneWord) {
+    using Kind = gl::IdLayout::Kind;
+    EXPECT_EQ(gl::IdLayout::for_scene(5, 0).kind, Kind::kObjectsOnly);
+    const gl::IdLayout whitted = gl::IdLayout::for_scene(5, 69451);  // ids 1-5: 3 bits
+    EXPECT_EQ(whitted.kind, Kind::kPacked);
+    EXPECT_EQ(whitted.prim_bits, 29);
+    EXPECT_EQ(whitted.shader_prim_bits(), 29u);
+    EXPECT_FALSE(whitted.second_target());
+    const std::size_t two21 = std::size_t{1} << 21;
+    EXPECT_EQ(gl::IdLayout::for_scene(1601, two21).prim_bits, 21);  // ids to 1601: 11 bits
+    EXPECT_EQ(gl::IdLayout::for_scene(1601, two21 + 1).kind, Kind::kSeparate);
+    EXPECT_EQ(gl::IdLayout::for_scene(2047, two21).prim_bits, 21);
+    EXPECT_EQ(gl::IdLayout::for_scene(2048, two21).kind, Kind::kSeparate);  // 12 bits
+    EXPECT_EQ(gl::IdLayout::for_scene(1, std::size_t{1} << 31).prim_bits, 31);
+    EXPECT_EQ(gl::IdLayout::for_scene(1, (std::size_t{1} << 31) + 1).kind, Kind::kSeparate);
+    EXPECT_EQ(gl::IdLayout::for_scene(std::size_t{1} << 32, 1).kind, Kind::kSeparate);
+    const gl::IdLayout separate = gl::IdLayout::for_scene(3, std::size_t{1} << 31);
+    EXPECT_TRUE(separate.second_target());
+    EXPECT_EQ(separate.shader_prim_bits(), 0u);
+}
+
+// Packed ids read back as the two targets' ids, pixel for pixel, from both passes, and
+// so do the packed ids cut to the fewest bits the mesh needs (every mask and shift at
+// its edge; a sphere's tessellation, whose triangles nothing reads, is cut then, so
+// triangles are compared on the mesh's pixels). One pixel read alone is unpacked too.
+TEST_P(GlItemBuffer, PackedIdsReadBackAsTwoTargets) {
+    for (const char* name : {"cornell.json", "whitted.json"}) {
+        const Scene scene(load(name, 120, 90));
+        gl::RasterRenderer raster(scene);
+        ASSERT_EQ(raster.id_layout().kind, gl::IdLayout::Kind::kPacked) << name;
+        std::size_t mesh_triangles = 0;
+        for (const TriangleMesh& m : scene.meshes)
+            mesh_triangles = std::max(mesh_triangles, m.triangles.size());
+        const int fewest = static_cast<int>(std::bit_width(mesh_triangles - 1));
+        const gl::IdLayout packed = raster.id_layout();
+        raster.set_id_layout({gl::IdLayout::Kind::kSeparate, 0});
+        const ItemBuffer two = raster.render_item_buffer(scene.camera);
+        const ItemBuffer two_shared = raster.render_with_item_buffer(scene.camera).ids;
+        EXPECT_TRUE(two.object == two_shared.object && two.prim == two_shared.prim) << name;
+        for (const gl::IdLayout layout :
+             {packed, gl::IdLayout{gl::IdLayout::Kind::kPacked, fewest}}) {
+            raster.set_id_layout(layout);
+            for (const bool shared : {false, true}) {
+                const ItemBuffer one = shared ? raster.render_with_item_buffer(scene.camera).ids
+                                              : raster.render_item_buffer(scene.camera);
+                const std::string what = std::string(name) + ", " +
+                                         std::to_string(layout.prim_bits) + " bits" +
+                                         (shared ? ", shared pass" : "");
+                EXPECT_TRUE(one.object == two.object) << what;
+                std::size_t mesh_pixels = 0, unlike = 0;
+                for (std::size_t i = 0; i < one.object.size(); ++i) {
+                    const std::uint32_t id = one.object[i];
+                    if (id == ItemBuffer::kEmpty ||
+                        !std::holds_alternative<MeshRef>(scene.objects[id - 1].shape))
+                        continue;
+                    ++mesh_pixels;
+                    unlike += one.prim[i] != two.prim[i];
+                }
+                EXPECT_GT(mesh_pixels, 200u) << what;
+                EXPECT_EQ(unlike, 0u) << what;
+                if (layout.prim_bits == packed.prim_bits) {
+                    EXPECT_TRUE(one.prim == two.prim) << what;
+                }
+            }
+            const gl::Framebuffer& fb = raster.render_item_buffer_to_texture(scene.camera);
+            for (const auto& [x, y] : {std::pair{60, 45}, {10, 80}, {100, 20}})
+                EXPECT_EQ(fb.read_id(x, y), two.object[two.index(x, y)])
+                    << name << " " << x << "," << y;
+        }
+    }
+}
+
+// The viewer's item-buffer view samples the packed target itself: each pixel shows the
+// palette colour of its object, the triangle bits shifted away.
+TEST_P(GlItemBuffer, TheItemViewShowsPackedIdsAsTheirObjects) {
+    const Scene scene(load("whitted.json", 120, 90));
+    gl::RasterRenderer raster(scene);
+    ASSERT_EQ(raster.id_layout().kind, gl::IdLayout::Kind::kPacked);
+    const ItemBuffer ids = raster.render_item_buffer(scene.camera);
+    const gl::Framebuffer& packed = raster.render_item_buffer_to_texture(scene.camera);
+    gl::Compositor compositor;
+    compositor.set_item_palette(scene.objects.size());
+    gl::CompositeInputs in;
+    in.view = gl::View::kItemBuffer;
+    in.item_buffer = packed.texture();
+    in.item_buffer_shift = packed.ids().shader_prim_bits();
+    const gl::Framebuffer screen(gl::Framebuffer::Kind::kColour, ids.width, ids.height);
+    screen.bind();
+    compositor.draw(in, ids.width, ids.height);
+    const Image shown = screen.read_colour();
+    std::vector<vec3> palette;
+    for (std::uint32_t id = 0; id <= scene.objects.size(); ++id) {
+        const vec3 c = item_colour(id);
+        palette.push_back({srgb_encode(c.x), srgb_encode(c.y), srgb_encode(c.z)});
+    }
+    std::size_t wrong = 0, objects = 0;
+    for (std::size_t i = 0; i < ids.object.size(); ++i) {
+        const auto nearest = std::min_element(palette.begin(), palette.end(), [&](vec3 a, vec3 b) {
+            return glm::length(a - shown.pixels[i]) < glm::length(b - shown.pixels[i]);
+        });
+        wrong += static_cast<std::uint32_t>(nearest - palette.begin()) != ids.object[i];
+        objects += ids.object[i] != ItemBuffer::kEmpty;
+    }
+    EXPECT_EQ(wrong, 0u);
+    EXPECT_GT(objects, ids.object.size() / 4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Headless, GlItemBuffer,
