@@ -195,10 +195,28 @@ TEST(IdLayout, PacksWhereObjectsAndTrianglesFitInOneWord) {
 // Packed ids read back as the two targets' ids, pixel for pixel, from both passes, and
 // so do the packed ids cut to the fewest bits the mesh needs (every mask and shift at
 // its edge; a sphere's tessellation, whose triangles nothing reads, is cut then, so
-// triangles are compared on the mesh's pixels). One pixel read alone is unpacked too.
+// triangles are compared on the mesh's pixels: the last scene's two-triangle quad leaves
+// one bit, far fewer than its sphere's tessellation has). One pixel read alone is
+// unpacked too.
 TEST_P(GlItemBuffer, PackedIdsReadBackAsTwoTargets) {
-    for (const char* name : {"cornell.json", "whitted.json"}) {
-        const Scene scene(load(name, 120, 90));
+    const auto dir = test::temp_dir(std::string("packed_ids_") +
+                                    (GetParam() == gl::Backend::kEgl ? "egl" : "osmesa"));
+    test::write_file(dir / "quad.obj",
+                     "v -0.2 -1 0\nv 1.8 -1 0\nv -0.2 1 0\nv 1.8 1 0\nf 1 2 4\nf 1 4 3\n");
+    const auto quad_and_ball = test::write_file(
+        dir / "quad_and_ball.json",
+        R"({"camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 40},
+            "lights": [{"type": "point", "position": [0, 3, 5], "color": 1}],
+            "objects": [{"type": "sphere", "center": [-1, 0, 0], "radius": 0.8},
+                        {"type": "mesh", "file": "quad.obj"}]})");
+    std::vector<std::pair<std::string, SceneDescription>> scenes;
+    for (const char* name : {"cornell.json", "whitted.json"})
+        scenes.emplace_back(name, load(name, 120, 90));
+    SceneDescription small = load_scene(quad_and_ball).scene;
+    small.camera = small.camera.resized(120, 90);
+    scenes.emplace_back("quad_and_ball.json", std::move(small));
+    for (auto& [name, description] : scenes) {
+        const Scene scene(std::move(description));
         gl::RasterRenderer raster(scene);
         ASSERT_EQ(raster.id_layout().kind, gl::IdLayout::Kind::kPacked) << name;
         std::size_t mesh_triangles = 0;
