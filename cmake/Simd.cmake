@@ -10,7 +10,8 @@
 #         AVX-512 build was no faster), else the compiler's default. rtview is built
 #         where it runs; for a binary to copy to other machines, configure with
 #         -DRTVIEW_SIMD=avx2 or sse2.
-#   avx512: x86-64-v4 regardless.   avx2: x86-64-v3 regardless.
+#   avx512: x86-64-v4 regardless.   avx2: x86-64-v3 regardless (also for valgrind, which
+#         does not decode AVX-512).
 #   sse2: the compiler's default (x86-64).
 set(RTVIEW_SIMD "auto" CACHE STRING "auto | avx512 | avx2 | sse2")
 set_property(CACHE RTVIEW_SIMD PROPERTY STRINGS auto avx512 avx2 sse2)
