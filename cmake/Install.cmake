@@ -16,6 +16,9 @@ if(RTVIEW_BUILD_VIEWER)
   list(APPEND RTVIEW_PROGRAMS rtview)
 endif()
 install(TARGETS ${RTVIEW_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The image codec module (core/image_codec.h), opened at run time from lib/rtview above
+# bin/ (core/program_dir.h): a fixed lib/, not GNUInstallDirs' multiarch folder.
+install(TARGETS rtview_image_oiio LIBRARY DESTINATION lib/rtview)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaders/ DESTINATION ${CMAKE_INSTALL_DATADIR}/rtview/shaders)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/ DESTINATION ${CMAKE_INSTALL_DATADIR}/rtview/assets)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})

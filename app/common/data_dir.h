@@ -7,14 +7,12 @@
 //      build tree mirrors it (build/share/rtview holds links to the source tree's folders,
 //      so an edited shader needs no build);
 //   3. shaders/ and assets/ in the program's own folder (a copied bundle).
+// (core/program_dir.h: the image codec module is found the same way, in lib/rtview.)
 // No path of the source tree is compiled in: an installed program runs anywhere.
 
 #include <filesystem>
 
 namespace rt::app {
-
-// The folder of the running program (/proc/self/exe), or empty if it cannot be read.
-std::filesystem::path program_dir();
 
 std::filesystem::path shader_dir();
 std::filesystem::path asset_dir();

@@ -42,6 +42,25 @@ renders_like_the_build() {
             fail "$name: the $image image differs from the build tree's"
         fi
     done
+    # Its image codec (lib/rtview, opened when a file other than a PNG is read or written)
+    # is the installed one: an EXR is written with it; without it a PNG still is, and the
+    # EXR's failure is one line naming where the codec should be.
+    "$prefix/bin/rtrender" "$prefix/share/rtview/assets/scenes/tutorial.json" --mode trace \
+        --size 16x16 -q -o "$out/$name.exr" && [ -s "$out/$name.exr" ] &&
+        ok "$name: it writes EXR through its codec" || fail "$name: no EXR through its codec"
+    mv "$prefix/lib/rtview" "$prefix/lib/rtview.away"
+    msg=$("$prefix/bin/rtrender" "$prefix/share/rtview/assets/scenes/tutorial.json" --mode trace \
+        --size 16x16 -q -o "$out/$name.none.exr" 2>&1)
+    status=$?
+    "$prefix/bin/rtrender" "$prefix/share/rtview/assets/scenes/tutorial.json" --mode trace \
+        --size 16x16 -q -o "$out/$name.nocodec.png" || fail "$name: no PNG without the codec"
+    mv "$prefix/lib/rtview.away" "$prefix/lib/rtview"
+    if [ $status -eq 1 ] && [ "$(wc -l <<<"$msg")" -eq 1 ] &&
+        grep -q -F "$prefix/lib/rtview/librtview_image_oiio.so" <<<"$msg"; then
+        ok "$name: it opens the installed codec ($msg)"
+    else
+        fail "$name: without the installed codec: status $status, '$msg'"
+    fi
     # Its shaders are the installed ones: without them it says which file it could not read.
     mv "$prefix/share/rtview/shaders" "$prefix/share/rtview/shaders.away"
     msg=$("$prefix/bin/rtrender" "$prefix/share/rtview/assets/scenes/tutorial.json" --mode raster \
@@ -61,7 +80,7 @@ renders_like_the_build "$out/prefix" installed
 if cpack -G DEB --config "$build/CPackConfig.cmake" -B "$out/package" >"$out/cpack.log" 2>&1; then
     deb=$(ls "$out"/package/rtview_*.deb)
     depends=$(dpkg-deb -f "$deb" Depends)
-    for lib in libopenimageio libegl1 libosmesa6 libegl-mesa0; do
+    for lib in libopenimageio libpng16 libegl1 libosmesa6 libegl-mesa0; do
         if grep -q "$lib" <<<"$depends"; then ok "package depends on $lib"; else fail "package does not depend on $lib: $depends"; fi
     done
     dpkg-deb -x "$deb" "$out/root"

@@ -93,9 +93,44 @@ TEST(Image, ExrKeepsLinearValuesAboveOne) {
             EXPECT_NEAR(back.pixels[i][k], image.pixels[i][k], 1e-3f * (1.0f + image.pixels[i][k]));
 }
 
+// PNG (libpng) and EXR (the image codec) are written by different code: the same image's
+// rows must come back in the same places from both.
+TEST(Image, ExrAndPngHoldTheSameRows) {
+    const auto dir = test::temp_dir("rows");
+    const Image image = gradient();
+    write_image(image, dir / "g.png");
+    write_image(image, dir / "g.exr");
+    const Image png = read_image(dir / "g.png"), exr = read_image(dir / "g.exr");
+    ASSERT_EQ(exr.width, png.width);
+    ASSERT_EQ(exr.height, png.height);
+    for (std::size_t i = 0; i < png.pixels.size(); ++i)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(srgb_encode(exr.pixels[i][k]), srgb_encode(png.pixels[i][k]),
+                        0.5f / 255.0f + 1e-3f)
+                << i;
+}
+
 TEST(Image, UnwritablePathIsAnError) {
     EXPECT_THROW(write_image(gradient(), "/nonexistent-dir/x.png"), Error);
     EXPECT_THROW(write_image(gradient(), test::temp_dir("bmp") / "x.bmp"), Error);
+}
+
+// A disk that fills while the PNG is written (libpng's error, by longjmp out of the
+// encoder) is an rt::Error naming the file, not a crash or a truncated file said written.
+TEST(Image, AFullDiskIsAnError) {
+    const auto path = test::temp_dir("full") / "x.png";
+    std::filesystem::create_symlink("/dev/full", path);
+    Image big(512, 512);
+    for (std::size_t i = 0; i < big.pixels.size(); ++i)
+        big.pixels[i] = vec3(static_cast<float>(i % 251) / 251.0f, 0.5f, 0.25f);
+    try {
+        write_image(big, path);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.file(), path.string());
+        EXPECT_EQ(e.where(), "output");
+        EXPECT_NE(e.detail().find("No space left on device"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
