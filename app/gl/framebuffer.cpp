@@ -35,7 +35,11 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples, IdLayout
       ids_(ids),
       fbo_(make_framebuffer()) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-    const int attachments = kind == Kind::kColourAndIds ? 3 : (kind == Kind::kItemBuffer ? 2 : 1);
+    // The colour (all but kItemBuffer), the ids (kItemBuffer, kColourAndIds), and the
+    // triangles' own target only where the layout has one.
+    const bool has_ids = kind == Kind::kItemBuffer || kind == Kind::kColourAndIds;
+    const int attachments = (kind == Kind::kItemBuffer ? 0 : 1) +
+                            (has_ids ? 1 + (ids.second_target() ? 1 : 0) : 0);
     for (int i = 0; i < attachments; ++i) {
         colour_[i] = make_texture();
         glBindTexture(GL_TEXTURE_2D, colour_[i].get());
@@ -59,7 +63,7 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples, IdLayout
     const GLenum draw[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
     glDrawBuffers(attachments, draw);
     require_complete("framebuffer");
-    if (kind == Kind::kItemBuffer || kind == Kind::kColourAndIds) draw_ids(true);
+    if (has_ids) draw_ids(true);
     if (samples_ > 1) {
         GLint most = 1;
         glGetIntegerv(GL_MAX_SAMPLES, &most);
@@ -81,7 +85,7 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples, IdLayout
                                   ms_depth_.get());
         require_complete("multisampled framebuffer");
     }
-    if (kind == Kind::kItemBuffer || kind == Kind::kColourAndIds) {
+    if (has_ids) {
         // Storage once: a fresh buffer each read cost fresh pages each frame.
         ids_pbo_ = make_buffer();
         glBindBuffer(GL_PIXEL_PACK_BUFFER, ids_pbo_.get());
