@@ -14,17 +14,11 @@
 namespace rt {
 namespace {
 
-vec3 encoded(const vec3& c) { return {srgb_encode(c.x), srgb_encode(c.y), srgb_encode(c.z)}; }
-
-bool finite(const vec3& c) {
-    return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
-}
-
 // Per channel, on the displayed values. A NaN or infinite pixel (a broken render) is as
 // far as a pixel can be from anything: 1 in every channel, never a NaN statistic.
 vec3 pixel_difference(const vec3& a, const vec3& b) {
     if (!finite(a) || !finite(b)) return vec3(1.0f);
-    return glm::abs(encoded(a) - encoded(b));
+    return glm::abs(srgb_encode(a) - srgb_encode(b));
 }
 
 // Colours given in sRGB terms are decoded, so that they show as written once encoded.

@@ -14,12 +14,6 @@
 namespace rt {
 namespace {
 
-bool finite(const vec3& c) {
-    return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
-}
-
-vec3 encoded(const vec3& c) { return {srgb_encode(c.x), srgb_encode(c.y), srgb_encode(c.z)}; }
-
 float largest(const vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
 constexpr float kNoneThreshold = 2.0f / 255.0f;  // compare_images' default threshold
@@ -120,10 +114,10 @@ ExplainMap explain(const Scene& scene, const Camera& camera, const RenderOptions
                     added = {at(tricks->shadow, i), at(tricks->reflection, i),
                              at(tricks->refraction, i)};
                 map.terms[i] = explain_terms(parts, raster.pixels[i], raster_ids.object[i], added);
-                const vec3 shown =
-                    finite(raster.pixels[i])
-                        ? glm::abs(encoded(map.traced.pixels[i]) - encoded(raster.pixels[i]))
-                        : vec3(1.0f);
+                const vec3 shown = finite(raster.pixels[i])
+                                       ? glm::abs(srgb_encode(map.traced.pixels[i]) -
+                                                  srgb_encode(raster.pixels[i]))
+                                       : vec3(1.0f);
                 map.difference[i] = largest(shown);
                 map.error[i] = shown.x + shown.y + shown.z;
                 map.cause[i] = cause_of(map.terms[i], map.difference[i]);

@@ -35,6 +35,9 @@ struct Image {
 // The sRGB transfer function (IEC 61966-2-1), on [0, 1]; values outside are clamped.
 float srgb_encode(float linear);
 float srgb_decode(float encoded);
+inline vec3 srgb_encode(const vec3& linear) {
+    return {srgb_encode(linear.x), srgb_encode(linear.y), srgb_encode(linear.z)};
+}
 // A colour given as 8-bit sRGB (as palettes are written), in linear RGB.
 vec3 from_srgb8(int r, int g, int b);
 // One channel as 8-bit sRGB: lround(255 srgb_encode(linear)), bit for bit, from a table

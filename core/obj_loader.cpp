@@ -19,10 +19,6 @@ vec3 to_vec3(const tinyobj::real_t* v) {
     return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
 }
 
-bool finite(const vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 Material from_mtl(const tinyobj::material_t& m) {
     Material out;
     out.name = m.name;

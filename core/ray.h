@@ -15,6 +15,11 @@ using glm::vec3;
 
 inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
+// Whether all three components are finite numbers (no NaN, no infinity).
+inline bool finite(const vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
 struct Ray {
     vec3 origin{0.0f};
     vec3 dir{0.0f, 0.0f, -1.0f};

@@ -20,6 +20,7 @@
 #include "core/tessellate.h"
 #include "core/triangle4.h"
 #include "core/wide_bvh.h"
+#include "test_util.h"
 
 namespace rt {
 
@@ -27,10 +28,7 @@ void PrintTo(AccelKind k, std::ostream* os) { *os << accel_name(k); }
 
 namespace {
 
-vec3 random_point(std::mt19937& rng, float extent) {
-    std::uniform_real_distribution<float> u(-extent, extent);
-    return {u(rng), u(rng), u(rng)};
-}
+using test::random_point;
 
 TriangleMesh random_soup(std::mt19937& rng, int count, AccelKind kind) {
     TriangleMesh mesh;

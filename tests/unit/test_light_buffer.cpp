@@ -44,10 +44,7 @@ bool listed(const LightBuffer::Cell& cell, std::uint32_t slot) {
     return std::find(cell.begin, cell.end, slot) != cell.end;
 }
 
-vec3 random_point(std::mt19937& rng, float extent) {
-    std::uniform_real_distribution<float> u(-extent, extent);
-    return {u(rng), u(rng), u(rng)};
-}
+using test::random_point;
 
 // Boxes of every kind around a light at `l`: small and far, thin, flat, reaching across
 // the light's own planes (so a face sees them to its edge), holding the light.

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +13,12 @@
 #include "core/scene_loader.h"
 
 namespace rt::test {
+
+// A point with each coordinate uniform in [-extent, extent].
+inline vec3 random_point(std::mt19937& rng, float extent) {
+    std::uniform_real_distribution<float> u(-extent, extent);
+    return {u(rng), u(rng), u(rng)};
+}
 
 inline std::filesystem::path source_dir() { return RTVIEW_SOURCE_DIR; }
 inline std::filesystem::path scene_path(const std::string& name) {
