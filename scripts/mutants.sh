@@ -83,6 +83,17 @@ mutant srgb8-boundary-float-rounds-down core/image.cpp \
 mutant srgb8-bisection-skips-a-float core/image.cpp \
     'lo = mid + 1;' 'lo = mid + 2;' \
     rt_tests $(unit 'Image.*')
+# Image files: PNG by libpng (core/png_file.cpp), EXR through the codec module.
+mutant image-io-png-rows-bottom-first core/png_file.cpp \
+    'png_write_row(png, rgb + static_cast<std::size_t>(y) * row);' \
+    'png_write_row(png, rgb + static_cast<std::size_t>(height - 1 - y) * row);' \
+    rt_tests $(unit 'Image.*')
+mutant image-io-exr-rows-not-flipped core/image_io.cpp \
+    'std::memcpy(&rows[(image.height - 1 - y) * row]' 'std::memcpy(&rows[y * row]' \
+    rt_tests $(unit 'Image.*')
+mutant image-io-png-write-error-unsaid core/png_file.cpp \
+    'if (write_error) return' 'if (false && write_error) return' \
+    rt_tests $(unit 'Image.*')
 # The item buffer's packed ids (app/gl/framebuffer.h, IdLayout).
 mutant packed-ids-mask-one-bit-short app/gl/framebuffer.cpp \
     'prim[i] = words[i] & mask;' 'prim[i] = words[i] & (mask >> 1);' \
