@@ -20,7 +20,7 @@
 namespace rt::codec {
 
 // Bumped whenever the table below changes shape: a module from another build refuses.
-inline constexpr int kVersion = 1;
+inline constexpr int kVersion = 2;
 
 // Pixels as the file holds them: rows top first, `channels` interleaved.
 template <typename T>
@@ -31,9 +31,10 @@ struct Pixels {
 
 struct ImageCodec {
     int version = kVersion;
-    // Linear float RGB, rows top first, stored as half floats.
-    std::string (*write_exr)(const std::string& path, int width, int height,
-                             const float* rgb) = nullptr;
+    // Linear float RGB, stored as half floats: the file's top row at `top_row`, each next
+    // row `row_step` floats on (negative for an image kept bottom row first, as rt::Image).
+    std::string (*write_exr)(const std::string& path, int width, int height, const float* top_row,
+                             std::ptrdiff_t row_step) = nullptr;
     // Any format OpenImageIO reads, as floats; `encoded` when the file held 8-bit values.
     std::string (*read_floats)(const std::string& path, Pixels<float>& out,
                                bool& encoded) = nullptr;

@@ -50,12 +50,17 @@ std::string last_line(std::string message) {
     return nl == std::string::npos ? message : message.substr(nl + 1);
 }
 
-std::string write_exr(const std::string& path, int width, int height, const float* rgb) {
+std::string write_exr(const std::string& path, int width, int height, const float* top_row,
+                      std::ptrdiff_t row_step) {
     OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::HALF);
     spec.attribute("oiio:ColorSpace", "Linear");
     auto out = OIIO::ImageOutput::create(path);
     if (!out) return last_line(OIIO::geterror());
-    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, rgb) || !out->close())
+    const auto pixel = static_cast<OIIO::stride_t>(3 * sizeof(float));
+    const auto row =
+        static_cast<OIIO::stride_t>(row_step * static_cast<std::ptrdiff_t>(sizeof(float)));
+    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, top_row, pixel, row) ||
+        !out->close())
         return last_line(out->geterror());
     return {};
 }

@@ -4,7 +4,7 @@
 #include <dlfcn.h>
 
 #include <algorithm>
-#include <cstring>
+#include <cstddef>
 
 #include "core/error.h"
 #include "core/file_kind.h"
@@ -104,18 +104,18 @@ void write_image(const Image& image, const std::filesystem::path& path) {
     const std::string file = path.string();
     if (!is_supported_output(path))
         throw Error(file, "output", "unsupported format; use .png or .exr");
+    if (image.width <= 0 || image.height <= 0) throw Error(file, "output", "the image is empty");
     if (lower_extension(path) == ".png") {
         const std::vector<std::uint8_t> bytes = to_srgb8(image);
         check(write_png_file(file, image.width, image.height, bytes.data()), file, "output");
         return;
     }
-    // Rows top first, as the file holds them (the image keeps the bottom row first).
-    std::vector<float> rows(static_cast<std::size_t>(image.width) * image.height * 3);
-    const std::size_t row = static_cast<std::size_t>(image.width) * 3;
-    for (int y = 0; y < image.height; ++y)
-        std::memcpy(&rows[(image.height - 1 - y) * row], &image.at(0, y), row * sizeof(float));
-    check(codec_for(file, "output").write_exr(file, image.width, image.height, rows.data()), file,
-          "output");
+    // The file's top row is the image's last; no copy turned over (a 16384 x 16384 frame
+    // is 3 GB).
+    const float* top_row = &image.at(0, image.height - 1).x;
+    const auto row_step = -3 * static_cast<std::ptrdiff_t>(image.width);
+    check(codec_for(file, "output").write_exr(file, image.width, image.height, top_row, row_step),
+          file, "output");
 }
 
 Image read_image(const std::filesystem::path& path) {

@@ -89,7 +89,8 @@ mutant image-io-png-rows-bottom-first core/png_file.cpp \
     'png_write_row(png, rgb + static_cast<std::size_t>(height - 1 - y) * row);' \
     rt_tests $(unit 'Image.*')
 mutant image-io-exr-rows-not-flipped core/image_io.cpp \
-    'std::memcpy(&rows[(image.height - 1 - y) * row]' 'std::memcpy(&rows[y * row]' \
+    'const auto row_step = -3 * static_cast<std::ptrdiff_t>(image.width);' \
+    'const auto row_step = 3 * static_cast<std::ptrdiff_t>(image.width); top_row = &image.at(0, 0).x;' \
     rt_tests $(unit 'Image.*')
 mutant image-io-png-write-error-unsaid core/png_file.cpp \
     'if (write_error) return' 'if (false && write_error) return' \
