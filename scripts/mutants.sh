@@ -108,6 +108,16 @@ mutant packed-ids-shown-unshifted shaders/present.frag \
 mutant packed-ids-picked-unshifted app/gl/framebuffer.cpp \
     'return id >> ids_.shader_prim_bits();' 'return id;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*PackedIds*'
+# The raster's draw list leaves out what the camera cannot see (app/gl/gpu_scene.cpp).
+mutant cull-left-side-too-far app/gl/gpu_scene.cpp \
+    '(beyond(-c.x, c.w) ? 0x01u : 0u)' '(beyond(-c.x, 0.8f * c.w) ? 0x01u : 0u)' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*GpuScene*'
+mutant cull-a-corner-enough app/gl/gpu_scene.cpp \
+    'outside_all &= outside;' 'outside_all &= outside; if (outside != 0) return false;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*GpuScene*'
+mutant cull-nothing app/gl/gpu_scene.cpp \
+    'return outside_all == 0;' 'return outside_all == 0 || true;' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*GpuScene*'
 mutant compare-counts-nothing core/compare.cpp \
     'd.pixels_over += largest > threshold;' 'd.pixels_over += 0;' \
     rt_tests $(unit 'Compare.*')

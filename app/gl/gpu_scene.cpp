@@ -40,6 +40,28 @@ float max_scale(const glm::mat4& m) {
         {glm::length(glm::vec3(m[0])), glm::length(glm::vec3(m[1])), glm::length(glm::vec3(m[2]))});
 }
 
+// False when the box lies wholly outside one of the clip volume's side planes or its near
+// plane (each a plane in world space: the test is exact for the box, not for what it
+// holds). A corner within a hair of a plane counts as inside, so that the GPU's own
+// rounding of the same transform cannot put a fragment where the box was left out.
+bool box_in_view(const Aabb& box, const glm::mat4& view_projection) {
+    unsigned outside_all = 0x1fu;  // x < -w, x > w, y < -w, y > w, z < -w
+    for (int corner = 0; corner < 8 && outside_all != 0; ++corner) {
+        const glm::vec3 p((corner & 1) ? box.hi.x : box.lo.x, (corner & 2) ? box.hi.y : box.lo.y,
+                          (corner & 4) ? box.hi.z : box.lo.z);
+        const glm::vec4 c = view_projection * glm::vec4(p, 1.0f);
+        const auto beyond = [&](float a, float b) {  // a > b, with a margin for rounding
+            return a - b > 1e-4f * (std::fabs(a) + std::fabs(b));
+        };
+        const unsigned outside = (beyond(-c.x, c.w) ? 0x01u : 0u) |
+                                 (beyond(c.x, c.w) ? 0x02u : 0u) |
+                                 (beyond(-c.y, c.w) ? 0x04u : 0u) |
+                                 (beyond(c.y, c.w) ? 0x08u : 0u) | (beyond(-c.z, c.w) ? 0x10u : 0u);
+        outside_all &= outside;
+    }
+    return outside_all == 0;
+}
+
 }  // namespace
 
 GpuMesh::GpuMesh(const TriangleMesh& mesh, bool smooth_faces) {
@@ -208,11 +230,18 @@ void GpuScene::add_mesh_draws(std::uint32_t object, const Object& o, const MeshR
     }
 }
 
-std::vector<DrawItem> GpuScene::draw_list(const Camera& camera) {
+std::vector<DrawItem> GpuScene::draw_list(const Camera& camera, Keep keep) {
     std::vector<DrawItem> out;
     const float extent = plane_extent(camera);
+    const DepthRange depth = depth_range(camera);
+    const glm::mat4 view_projection =
+        camera.projection(depth.near_plane, depth.far_plane) * camera.view();
     for (std::uint32_t i = 0; i < scene_.objects.size(); ++i) {
         const Object& o = scene_.objects[i];
+        if (keep == Keep::kInView && !std::holds_alternative<Plane>(o.shape)) {
+            const Aabb box = scene_.object_bounds(o);
+            if (!box.empty() && !box_in_view(box, view_projection)) continue;
+        }
         DrawItem item;
         item.model = o.transform ? o.transform->m : glm::mat4(1.0f);
         item.material = o.material;

@@ -59,7 +59,13 @@ class GpuScene {
   public:
     explicit GpuScene(const Scene& scene);
 
-    std::vector<DrawItem> draw_list(const Camera& camera);
+    // Which objects a draw list holds. kInView leaves out those whose box lies wholly
+    // beyond one side of the camera's frustum or behind its near plane: they could add no
+    // fragment, so the image and the item buffer are the same without them (a cube map's
+    // face sees about a sixth of a scene that surrounds its centre). kAll keeps them.
+    enum class Keep { kInView, kAll };
+
+    std::vector<DrawItem> draw_list(const Camera& camera, Keep keep = Keep::kInView);
     DepthRange depth_range(const Camera& camera) const;
 
   private:

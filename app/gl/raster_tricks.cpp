@@ -105,7 +105,7 @@ void RasterRenderer::ensure_environment_maps() {
     };
     std::vector<Candidate> candidates;
     std::vector<bool> seen(scene_.objects.size(), false);
-    for (const DrawItem& item : gpu_.draw_list(scene_.camera)) {
+    for (const DrawItem& item : gpu_.draw_list(scene_.camera, GpuScene::Keep::kAll)) {
         const std::size_t object = item.object_id - 1;
         const Material& m = scene_.materials[item.material];
         const bool mirror_or_glass = m.reflectivity > 0.0f || m.transparency > 0.0f;
