@@ -6,7 +6,8 @@
 // libraries (OpenCV, FFmpeg, GStreamer, GDAL...) whose loading took 0.26-0.38 s of every
 // process start here, before main (docs/BENCHMARKS.md). `--help`, an error message, the
 // viewer's window and every unit test that touches no image file now start without it,
-// and so does a render to PNG: PNG files are written by libpng directly (core/png_file.h).
+// and so do a render to PNG and a scene whose textures are PNG: PNG files are written and
+// read by libpng directly (core/png_file.h).
 //
 // Both sides are built from this tree by the same compiler, so the table may pass C++
 // types; nothing throws across it: each call returns an empty string, or one line saying
@@ -49,5 +50,9 @@ struct ImageCodec {
 inline constexpr const char* kEntryPoint = "rtview_image_codec";
 inline constexpr const char* kModuleName = "librtview_image_oiio.so";
 using EntryPoint = const ImageCodec* (*)();
+
+// The module, opened the first time it is asked for (core/image_io.cpp); where it cannot
+// be, rt::Error at `file` and `where` saying why.
+const ImageCodec& module(const std::string& file, const std::string& where);
 
 }  // namespace rt::codec

@@ -1,10 +1,11 @@
-// Image files: PNG written by libpng (core/png_file.h); everything else through the codec
-// module (core/image_codec.h), opened with dlopen the first time a program needs it. The
-// program itself links no OpenImageIO.
+// Image files: PNG written and, as textures, read by libpng (core/png_file.h); everything
+// else through the codec module (core/image_codec.h), opened with dlopen the first time a
+// program needs it. The program itself links no OpenImageIO.
 #include <dlfcn.h>
 
 #include <algorithm>
 #include <cstddef>
+#include <fstream>
 
 #include "core/error.h"
 #include "core/file_kind.h"
@@ -42,11 +43,24 @@ const Loaded& loaded() {
     return *once;
 }
 
-const codec::ImageCodec& codec_for(const std::string& file, const std::string& where) {
+}  // namespace
+
+const codec::ImageCodec& codec::module(const std::string& file, const std::string& where) {
     const Loaded& l = loaded();
     if (!l.codec)
         throw Error(file, where, "cannot open rtview's image codec (OpenImageIO): " + l.error);
     return *l.codec;
+}
+
+namespace {
+
+using codec::module;
+
+// Whether the file begins with PNG's signature (unreadable: no; the codec says why).
+bool png_file(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    unsigned char head[8] = {};
+    return in.read(reinterpret_cast<char*>(head), sizeof head) && is_png(head, sizeof head);
 }
 
 void check(const std::string& problem, const std::string& file, const std::string& where) {
@@ -76,15 +90,22 @@ Texture read_texture_file(const std::filesystem::path& path, const std::string& 
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(file, where, "no image file \"" + path.string() + "\"");
     codec::Pixels<std::uint8_t> px;
-    check(codec_for(file, where).read_bytes(path.string(), px), file, where);
+    check(png_file(path) ? read_png_file(path.string(), px)
+                         : module(file, where).read_bytes(path.string(), px),
+          file, where);
     return texture_from(px, path.string());
 }
 
 Texture decode_texture_bytes(const std::vector<unsigned char>& bytes, const std::string& extension,
                              const std::string& file, const std::string& where) {
     codec::Pixels<std::uint8_t> px;
-    check(codec_for(file, where).decode_bytes(bytes.data(), bytes.size(), extension, px), file,
-          where);
+    if (is_png(bytes.data(), bytes.size())) {
+        const std::string problem = decode_png(bytes.data(), bytes.size(), px);
+        check(problem.empty() ? problem : "cannot decode the image: " + problem, file, where);
+    } else {
+        check(module(file, where).decode_bytes(bytes.data(), bytes.size(), extension, px), file,
+              where);
+    }
     return texture_from(px, file + ": " + where);
 }
 
@@ -114,7 +135,7 @@ void write_image(const Image& image, const std::filesystem::path& path) {
     // is 3 GB).
     const float* top_row = &image.at(0, image.height - 1).x;
     const auto row_step = -3 * static_cast<std::ptrdiff_t>(image.width);
-    check(codec_for(file, "output").write_exr(file, image.width, image.height, top_row, row_step),
+    check(module(file, "output").write_exr(file, image.width, image.height, top_row, row_step),
           file, "output");
 }
 
@@ -122,7 +143,7 @@ Image read_image(const std::filesystem::path& path) {
     const std::string file = path.string();
     codec::Pixels<float> px;
     bool encoded = false;
-    check(codec_for(file, "input").read_floats(file, px, encoded), file, "input");
+    check(module(file, "input").read_floats(file, px, encoded), file, "input");
     Image image(px.width, px.height);
     for (int y = 0; y < px.height; ++y) {
         for (int x = 0; x < px.width; ++x) {

@@ -95,6 +95,17 @@ mutant image-io-exr-rows-not-flipped core/image_io.cpp \
 mutant image-io-png-write-error-unsaid core/png_file.cpp \
     'if (write_error) return' 'if (false && write_error) return' \
     rt_tests $(unit 'Image.*')
+# PNG textures read by libpng as OpenImageIO read them (Texture.PngFilesReadAsTheCodecReadsThem).
+mutant png-read-16-bits-cut core/png_file.cpp \
+    'return static_cast<std::uint8_t>((v * 255u + 32767u) / 65535u);' \
+    'return static_cast<std::uint8_t>(v >> 8);' \
+    rt_tests $(unit 'Texture.*')
+mutant png-read-trns-dropped core/png_file.cpp \
+    'png_set_expand(png);' 'png_set_expand(png); png_set_strip_alpha(png);' \
+    rt_tests $(unit 'Texture.*')
+mutant png-read-past-the-end core/png_file.cpp \
+    'if (n > source->size - source->at)' 'if (false)' \
+    rt_tests $(unit 'Texture.*')
 # The item buffer's packed ids (app/gl/framebuffer.h, IdLayout).
 mutant packed-ids-mask-one-bit-short app/gl/framebuffer.cpp \
     'prim[i] = words[i] & mask;' 'prim[i] = words[i] & (mask >> 1);' \

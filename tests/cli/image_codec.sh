@@ -2,13 +2,14 @@
 # OpenImageIO (its 261 shared libraries: 0.26-0.38 s of every process start) is loaded
 # only when an image other than a PNG is read or written (core/image_codec.h):
 #   - no program, nor the test programs, needs it to start (ldd);
-#   - rtrender's --help, a bad scene's one-line error and a render to PNG never load it
-#     (the dynamic linker's own account, LD_DEBUG=files), nor does rtview's --help;
-#   - an EXR, and a scene with a texture, do: the check above can see it.
-#   image_codec.sh ASSETS_DIR BAD_SCENE PROGRAM...   (rtrender first)
+#   - rtrender's --help, a bad scene's one-line error, a render to PNG and a scene whose
+#     textures are PNG never load it (the dynamic linker's own account, LD_DEBUG=files),
+#     nor does rtview's --help;
+#   - an EXR, and a JPEG texture, do: the check above can see it.
+#   image_codec.sh ASSETS_DIR TEST_DATA_DIR BAD_SCENE PROGRAM...   (rtrender first)
 set -u
-assets=$1 bad=$2
-shift 2
+assets=$1 data=$2 bad=$3
+shift 3
 rtrender=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -45,7 +46,10 @@ loads "a render to PNG" NO "$rtrender" "$scene" --size 32x24 -q -o "$work/t.png"
 [ -s "$work/t.png" ] || fail "no PNG written"
 loads "a render to EXR" YES "$rtrender" "$scene" --size 32x24 -q -o "$work/t.exr"
 [ -s "$work/t.exr" ] || fail "no EXR written"
-loads "a textured scene" YES "$rtrender" "$assets/scenes/textured.json" --size 32x24 -q -o "$work/x.png"
+loads "a scene with PNG textures" NO "$rtrender" "$assets/scenes/textured.json" --size 32x24 -q -o "$work/x.png"
+[ -s "$work/x.png" ] || fail "no PNG written for the textured scene"
+loads "a JPEG texture" YES "$rtrender" "$data/jpeg/quad.obj" --size 32x24 -q -o "$work/j.png"
+[ -s "$work/j.png" ] || fail "no PNG written for the JPEG-textured model"
 for program in "$@"; do
     case $(basename "$program") in
         rtview) loads "rtview --help" NO "$program" --help ;;

@@ -1,15 +1,24 @@
 // Textures (core/texture.h): the one sampling rule both pipelines follow, and the loaders
 // that give meshes their texture coordinates and materials their images.
 #include <gtest/gtest.h>
+#include <sys/mman.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "core/error.h"
 #include "core/gltf_loader.h"
 #include "core/image.h"
+#include "core/image_codec.h"
 #include "core/obj_loader.h"
+#include "core/png_file.h"
 #include "core/scene_loader.h"
+#include "core/texture.h"
 #include "test_util.h"
 
 namespace rt {
@@ -95,6 +104,109 @@ TEST(Texture, GltfBaseColourTextures) {
     std::size_t textured = 0;
     for (const Material& m : scene.scene.materials) textured += m.texture == 0u;
     EXPECT_EQ(textured, 1u);
+}
+
+std::vector<unsigned char> file_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// PNG textures are read by libpng (core/png_file.cpp), so that a textured scene does not
+// load OpenImageIO; they must read as OpenImageIO read them before: every colour type and
+// bit depth (tests/data/png/make.sh), a tRNS chunk, interlacing, every 16-bit value once,
+// the glTF samples' and the shipped textures, from a file and from memory.
+TEST(Texture, PngFilesReadAsTheCodecReadsThem) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& dir : {test::source_dir() / "tests/data", test::source_dir() / "assets"})
+        for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
+            if (entry.path().extension() == ".png") files.push_back(entry.path());
+    ASSERT_GE(files.size(), 21u);
+    const codec::ImageCodec& oiio = codec::module("test", "codec");
+    for (const auto& path : files) {
+        SCOPED_TRACE(path.string());
+        codec::Pixels<std::uint8_t> ours, theirs, from_memory;
+        ASSERT_EQ(read_png_file(path.string(), ours), "");
+        ASSERT_EQ(oiio.read_bytes(path.string(), theirs), "");
+        EXPECT_EQ(ours.width, theirs.width);
+        EXPECT_EQ(ours.height, theirs.height);
+        ASSERT_EQ(ours.channels, theirs.channels);
+        ASSERT_EQ(ours.data.size(), theirs.data.size());
+        // OpenImageIO premultiplies the colour by alpha (in linear terms where a gAMA chunk
+        // says so); libpng leaves it as stored, which is what a texture whose alpha is not
+        // used should show (PNG stores colour unassociated; glTF's opaque mode ignores
+        // alpha). So: alpha and opaque pixels alike, the rest no darker than the codec's;
+        // files without alpha byte for byte.
+        const int channels = ours.channels;
+        const bool alpha = channels == 2 || channels == 4;
+        std::size_t opaque = 0, translucent = 0;
+        for (std::size_t p = 0; p < ours.data.size(); p += static_cast<std::size_t>(channels)) {
+            const std::uint8_t a = alpha ? ours.data[p + channels - 1] : 255;
+            (a == 255 ? opaque : translucent) += 1;
+            for (int k = 0; k < channels; ++k) {
+                const std::uint8_t mine = ours.data[p + k], codec = theirs.data[p + k];
+                // Opaque at 8 bits may be 65534 of 65535 at 16: a step at most.
+                const int most = !alpha || k == channels - 1 ? 0 : a == 255 ? 1 : 255;
+                ASSERT_GE(mine, codec) << "pixel " << p / channels << ", channel " << k;
+                ASSERT_LE(mine - codec, most) << "pixel " << p / channels << ", channel " << k;
+            }
+        }
+        if (alpha && path.parent_path().filename() == "png") {  // make.sh's: both kinds
+            EXPECT_GT(opaque, 0u);
+            EXPECT_GT(translucent, 0u);
+        }
+        const std::vector<unsigned char> bytes = file_bytes(path);
+        ASSERT_EQ(decode_png(bytes.data(), bytes.size(), from_memory), "");
+        EXPECT_TRUE(from_memory.data == ours.data);
+    }
+}
+
+// A PNG cut short, or with a broken checksum, is one line naming the file and saying what
+// is wrong, from a file and from memory; the signature of another format is not a PNG.
+TEST(Texture, ABrokenPngIsOneLineNotACrash) {
+    const std::vector<unsigned char> good =
+        file_bytes(test::source_dir() / "tests/data/png/rgb8.png");
+    std::vector<std::vector<unsigned char>> broken;
+    for (std::size_t keep : {8u, 20u, 40u, 100u, 400u, 1000u})
+        broken.emplace_back(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(keep));
+    broken.push_back(good);
+    broken.back()[30] ^= 0x55u;  // inside IHDR or the chunk after it: a checksum that fails
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / "rtview_broken.png";
+    for (const auto& bytes : broken) {
+        SCOPED_TRACE(bytes.size());
+        codec::Pixels<std::uint8_t> px;
+        const std::string problem = decode_png(bytes.data(), bytes.size(), px);
+        EXPECT_NE(problem, "");
+        EXPECT_EQ(problem.find('\n'), std::string::npos) << problem;
+        std::ofstream(path, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()),
+                   static_cast<std::streamsize>(bytes.size()));
+        try {
+            (void)read_texture(path, "scene.obj", "map_Kd");
+            ADD_FAILURE() << "read without an error";
+        } catch (const Error& e) {
+            const std::string what = e.what();
+            EXPECT_EQ(what.rfind("scene.obj: map_Kd: cannot read the image", 0), 0u) << what;
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        }
+    }
+    std::filesystem::remove(path);
+    // From memory, nothing past the bytes given is read: each cut file ends where an
+    // unreadable page begins, so a read past its end would stop the test.
+    const long page = sysconf(_SC_PAGESIZE);
+    auto* const pages = static_cast<unsigned char*>(
+        mmap(nullptr, 2 * static_cast<std::size_t>(page), PROT_READ | PROT_WRITE,
+             MAP_PRIVATE | MAP_ANONYMOUS, -1, 0));
+    ASSERT_NE(pages, MAP_FAILED);
+    ASSERT_EQ(mprotect(pages + page, static_cast<std::size_t>(page), PROT_NONE), 0);
+    for (std::size_t keep = 8; keep <= std::min<std::size_t>(good.size(), 2000); keep += 7) {
+        unsigned char* const at = pages + page - keep;
+        std::memcpy(at, good.data(), keep);
+        codec::Pixels<std::uint8_t> px;
+        EXPECT_NE(decode_png(at, keep, px), "") << keep;
+    }
+    munmap(pages, 2 * static_cast<std::size_t>(page));
+    const unsigned char jpeg[] = {0xff, 0xd8, 0xff, 0xe0, 0, 16, 'J', 'F', 'I', 'F'};
+    EXPECT_FALSE(is_png(jpeg, sizeof jpeg));
 }
 
 }  // namespace
