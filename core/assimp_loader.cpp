@@ -1,7 +1,6 @@
 #include "core/assimp_loader.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -16,6 +15,7 @@
 
 #include "core/error.h"
 #include "core/file_kind.h"
+#include "core/ply_check.h"
 
 namespace rt {
 namespace {
@@ -59,69 +59,6 @@ void gather(const std::string& file, const aiMesh& m, Gathered& g) {
     }
 }
 
-// The least bytes one value of a PLY property type takes in a binary body.
-std::uint64_t ply_type_bytes(const std::string& type) {
-    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-    if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" ||
-        type == "float32")
-        return 4;
-    if (type == "double" || type == "float64") return 8;
-    return 1;  // char, uchar, int8, uint8; Assimp names any other
-}
-
-struct PlyElement {
-    std::string name;
-    std::uint64_t count = 0;
-    std::uint64_t least_bytes = 0;  // of one instance
-};
-
-// A PLY header must end, and promise no more than the file holds: Assimp's reader loops
-// for ever on a header cut off before its end_header line, and for minutes on one that
-// declares a hundred million vertices over a few bytes. So the header is read first, up
-// to end_header (a binary body follows it): each element's instances take at least their
-// values' bytes in binary, or a character and a separator per value in ASCII.
-void check_ply_header(const std::string& file, std::istream& in, std::uint64_t file_bytes) {
-    std::string line;
-    int number = 0;
-    bool ascii = false;
-    std::vector<PlyElement> elements;
-    while (std::getline(in, line)) {
-        ++number;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line == "end_header") break;
-        std::istringstream words(line);
-        std::string keyword, a, b;
-        words >> keyword >> a >> b;
-        if (keyword == "format") ascii = a == "ascii";
-        if (keyword == "element") {
-            PlyElement e{a, 0, 0};
-            const auto [end, ec] = std::from_chars(b.data(), b.data() + b.size(), e.count);
-            if (ec == std::errc{} && end == b.data() + b.size()) elements.push_back(e);
-        }
-        if (keyword == "property" && !elements.empty())  // a list: its count's type
-            elements.back().least_bytes += ascii ? 2 : ply_type_bytes(a == "list" ? b : a);
-    }
-    if (line != "end_header") {
-        if (number == 0) throw Error(file, "header", "the file is empty");
-        throw Error(file, "line " + std::to_string(number),
-                    "the PLY header ends without its end_header line");
-    }
-    const auto at = in.tellg();
-    if (at < 0) return;
-    // ASCII's last value may end the file without a separator: one byte of slack.
-    std::uint64_t budget =
-        file_bytes - std::min<std::uint64_t>(file_bytes, static_cast<std::uint64_t>(at)) + 1;
-    for (const PlyElement& e : elements) {
-        if (e.least_bytes == 0) continue;
-        if (e.count > budget / e.least_bytes)
-            throw Error(file, "element " + e.name,
-                        "the header declares " + std::to_string(e.count) +
-                            ", more than the file's " + std::to_string(file_bytes) +
-                            " bytes can hold");
-        budget -= e.count * e.least_bytes;
-    }
-}
-
 // The file's bytes if it begins with a UTF-8 byte order mark, else nothing.
 std::string utf8_bom_file(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -144,7 +81,7 @@ MeshFile load_ply_stl(const std::filesystem::path& path, const MeshFileOptions& 
     if (extension == ".ply") {
         std::ifstream in(path, std::ios::binary);
         if (!bytes.empty()) in.seekg(3);
-        check_ply_header(file, in, std::filesystem::file_size(path, ec));
+        check_ply(file, in, std::filesystem::file_size(path, ec));
     }
     Assimp::Importer importer;
     // A text file saved with a UTF-8 byte order mark is still the file: Assimp's PLY

@@ -106,6 +106,17 @@ mutant png-read-trns-dropped core/png_file.cpp \
 mutant png-read-past-the-end core/png_file.cpp \
     'if (n > source->size - source->at)' 'if (false)' \
     rt_tests $(unit 'Texture.*')
+# A PLY's body checked before Assimp reads it (core/ply_check.cpp).
+mutant ply-ascii-missing-faces-ignored core/ply_check.cpp \
+    'if (!lines.next(words))' 'if (!lines.next(words)) return; if (false)' \
+    rt_tests $(unit 'PlyStl.*')
+mutant ply-ascii-words-taken-for-numbers core/ply_check.cpp \
+    'if (!is_number(w))' 'if (false)' \
+    rt_tests $(unit 'PlyStl.*')
+mutant ply-binary-list-length-byte-order core/ply_check.cpp \
+    'const int byte = h.format == Format::kBig ? k : p.count_bytes - 1 - k;' \
+    'const int byte = h.format != Format::kBig ? k : p.count_bytes - 1 - k;' \
+    rt_tests $(unit 'PlyStl.*')
 # The item buffer's packed ids (app/gl/framebuffer.h, IdLayout).
 mutant packed-ids-mask-one-bit-short app/gl/framebuffer.cpp \
     'prim[i] = words[i] & mask;' 'prim[i] = words[i] & (mask >> 1);' \
@@ -518,7 +529,7 @@ mutant item-buffer-fresh-hit-keeps-no-object core/scene.cpp \
     '            hits[lane].object = object;' '' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
 mutant ply-header-unchecked core/assimp_loader.cpp \
-    '        check_ply_header(file, in, std::filesystem::file_size(path, ec));' '' \
+    '        check_ply(file, in, std::filesystem::file_size(path, ec));' '' \
     rt_tests timeout 60 $(unit 'PlyStl.*')
 mutant ply-faces-without-vertices-triangulated core/assimp_loader.cpp \
     'if (face.mNumIndices == 0) {' 'if (false) {' \
@@ -526,8 +537,8 @@ mutant ply-faces-without-vertices-triangulated core/assimp_loader.cpp \
 mutant ply-primitive-types-not-recounted core/assimp_loader.cpp \
     'mesh.mPrimitiveTypes = types;' '' \
     rt_tests $(unit 'PlyStl.*')
-mutant ply-counts-unchecked core/assimp_loader.cpp \
-    'if (e.count > budget / e.least_bytes)' 'if (false)' \
+mutant ply-counts-unchecked core/ply_check.cpp \
+    'if (e.count > budget / least)' 'if (false)' \
     rt_tests timeout 60 $(unit 'PlyStl.*')
 mutant ply-byte-order-mark-kept core/assimp_loader.cpp \
     'return std::string(mark, 3) + all.str();' 'return {};' \

@@ -71,7 +71,7 @@ where_of() {
         gltf_required_extension.gltf) echo "/extensionsRequired" ;;
         gltf_truncated.glb) echo "load" ;;
         gltf_bad_image.gltf) echo "/images/0" ;;
-        ply_truncated.ply) echo "parse" ;;
+        ply_truncated.ply) echo "element face" ;;
         stl_truncated.stl) echo "parse" ;;
         texture_missing.obj) echo "material \"broken\" map_Kd" ;;
         *) echo "UNLISTED" ;;  # a new corpus file must say where its error is

@@ -2,6 +2,8 @@
 // wrote: one coloured octahedron as ASCII and binary PLY and as ASCII and binary STL.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -74,7 +76,9 @@ TEST(PlyStl, ScenesOfPlyAndStl) {
             load_scene(bad / name);
             ADD_FAILURE() << name << " loaded";
         } catch (const Error& e) {
-            EXPECT_EQ(e.where(), "parse") << e.what();
+            EXPECT_EQ(e.where(),
+                      name == std::string("ply_truncated.ply") ? "element face" : "parse")
+                << e.what();
         }
     }
 }
@@ -117,6 +121,72 @@ TEST(PlyStl, AByteOrderMarkIsReadAndCutFilesAreRefused) {
     const MeshFile empty_face = load_ply_stl(test::write_file(
         dir / "empty_face.ply", header("3", "2") + "end_header\n" + corners + "0\n3 0 1 2\n"));
     EXPECT_EQ(empty_face.mesh.triangles.size(), 1u);
+}
+
+// A body cut short, or a value that is not one, is one error at its line (ASCII) or
+// element (binary), before Assimp reads it: Assimp took a cut ASCII file's faces as
+// fewer faces, or made up a cut face's last index (exit 0, a silently wrong mesh), and
+// gave a binary one's out-of-range indices as its own message with no place.
+TEST(PlyStl, ACutOrMalformedBodyIsOneLocatedError) {
+    const auto dir = test::temp_dir("ply_body");
+    const auto header = [](const std::string& format, const std::string& count_type) {
+        return "ply\nformat " + format +
+               " 1.0\nelement vertex 3\nproperty float x\n"
+               "property float y\nproperty float z\nelement face 2\nproperty list " +
+               count_type + " int vertex_indices\nend_header\n";
+    };
+    const std::string ascii = header("ascii", "uchar");  // 9 lines
+    const std::string corners = "0 0 0\n1 0 0\n0 1 0\n";
+    const std::pair<std::string, std::string> bad[] = {
+        {ascii + corners + "3 0 1 2\n", "line 14"},         // one face of two
+        {ascii + corners + "3 0 1 2\n3 0 2\n", "line 14"},  // the last face a value short
+        {ascii + corners + "3 0 1 2\n3 0 x 2\n", "line 14"},
+        {ascii + "0 0 0\n1 0\n0 1 0\n3 0 1 2\n3 0 2 1\n", "line 11"},
+        {ascii + corners + "-1 0 1 2\n3 0 2 1\n", "line 13"},
+        {ascii + corners + "2.5 0 1 2\n3 0 2 1\n", "line 13"},
+    };
+    for (const auto& [bytes, where] : bad) {
+        try {
+            load_ply_stl(test::write_file(dir / "bad.ply", bytes));
+            ADD_FAILURE() << where << ": loaded";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.where(), where) << e.what();
+        }
+    }
+    // Binary, in either byte order, with a two-byte list length: whole, it loads; cut
+    // anywhere in its faces, it is one error at the faces.
+    for (const bool big : {false, true}) {
+        SCOPED_TRACE(big ? "big-endian" : "little-endian");
+        std::string body;
+        const auto put = [&](std::uint32_t bits, int bytes) {
+            for (int k = 0; k < bytes; ++k) {
+                const int shift = 8 * (big ? bytes - 1 - k : k);
+                body += static_cast<char>((bits >> shift) & 0xffu);
+            }
+        };
+        for (const float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) {
+            std::uint32_t bits = 0;
+            std::memcpy(&bits, &v, 4);
+            put(bits, 4);
+        }
+        for (const auto& face : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 1}}) {
+            put(3, 2);
+            for (const int i : face) put(static_cast<std::uint32_t>(i), 4);
+        }
+        const std::string whole =
+            header(big ? "binary_big_endian" : "binary_little_endian", "ushort") + body;
+        EXPECT_EQ(load_ply_stl(test::write_file(dir / "whole.ply", whole)).mesh.triangles.size(),
+                  2u);
+        for (std::size_t cut = 1; cut <= 2 * 14; ++cut) {
+            try {
+                load_ply_stl(
+                    test::write_file(dir / "cut.ply", whole.substr(0, whole.size() - cut)));
+                ADD_FAILURE() << cut << " bytes short: loaded";
+            } catch (const Error& e) {
+                EXPECT_EQ(e.where(), "element face") << e.what();
+            }
+        }
+    }
 }
 
 }  // namespace
