@@ -10,7 +10,8 @@ find_package(tinyobjloader CONFIG REQUIRED)
 find_package(TinyGLTF CONFIG REQUIRED)
 find_package(assimp CONFIG REQUIRED)
 find_package(OpenImageIO CONFIG REQUIRED)  # the codec module (core/image_codec.h)
-find_package(PNG REQUIRED)                  # PNG output without it (core/png_file.h)
+find_package(PNG REQUIRED)                  # PNG files without it (core/png_file.h)
+find_package(JPEG REQUIRED)                 # JPEG textures without it (core/jpeg_file.h)
 
 # Debian's OpenImageIO config names /usr/include/opencv4 as an include directory,
 # which does not exist unless OpenCV's headers are installed: drop it.

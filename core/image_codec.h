@@ -23,6 +23,10 @@ namespace rt::codec {
 // Bumped whenever the table below changes shape: a module from another build refuses.
 inline constexpr int kVersion = 2;
 
+// The most texels a texture may have, 8192 x 8192: a larger one is refused unread, by the
+// codec and by rtview's own PNG and JPEG readers alike.
+inline constexpr long long kMaxTexels = 1ll << 26;
+
 // Pixels as the file holds them: rows top first, `channels` interleaved.
 template <typename T>
 struct Pixels {

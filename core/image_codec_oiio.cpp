@@ -79,7 +79,6 @@ std::string read_floats(const std::string& path, Pixels<float>& out, bool& encod
 
 std::string bytes_from(OIIO::ImageInput& in, Pixels<std::uint8_t>& out) {
     const OIIO::ImageSpec& spec = in.spec();
-    constexpr long long kMaxTexels = 1ll << 26;  // 8192 x 8192
     if (spec.width <= 0 || spec.height <= 0 ||
         static_cast<long long>(spec.width) * spec.height > kMaxTexels)
         return "the image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +

@@ -1,16 +1,19 @@
-// Image files: PNG written and, as textures, read by libpng (core/png_file.h); everything
-// else through the codec module (core/image_codec.h), opened with dlopen the first time a
-// program needs it. The program itself links no OpenImageIO.
+// Image files: PNG written and, as textures, read by libpng (core/png_file.h), JPEG
+// textures read by libjpeg (core/jpeg_file.h); everything else through the codec module
+// (core/image_codec.h), opened with dlopen the first time a program needs it. The program itself
+// links no OpenImageIO.
 #include <dlfcn.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <fstream>
+#include <iterator>
 
 #include "core/error.h"
 #include "core/file_kind.h"
 #include "core/image.h"
 #include "core/image_codec.h"
+#include "core/jpeg_file.h"
 #include "core/png_file.h"
 #include "core/program_dir.h"
 #include "core/texture.h"
@@ -56,15 +59,25 @@ namespace {
 
 using codec::module;
 
-// Whether the file begins with PNG's signature (unreadable: no; the codec says why).
-bool png_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    unsigned char head[8] = {};
-    return in.read(reinterpret_cast<char*>(head), sizeof head) && is_png(head, sizeof head);
-}
-
 void check(const std::string& problem, const std::string& file, const std::string& where) {
     if (!problem.empty()) throw Error(file, where, problem);
+}
+
+// PNG and JPEG are decoded here, by libpng and libjpeg; anything else, and a CMYK JPEG, by
+// the codec. False where the codec must decode; else `problem` is empty or says what
+// went wrong.
+bool decode_here(const std::vector<unsigned char>& bytes, codec::Pixels<std::uint8_t>& px,
+                 std::string& problem) {
+    if (is_png(bytes.data(), bytes.size())) {
+        problem = decode_png(bytes.data(), bytes.size(), px);
+        return true;
+    }
+    if (is_jpeg(bytes.data(), bytes.size())) {
+        const JpegRead read = decode_jpeg(bytes.data(), bytes.size(), px);
+        problem = read.problem;
+        return read.handled;
+    }
+    return false;
 }
 
 // Eight bits a channel, sRGB decoded through the same table GL's SRGB8 formats use; a
@@ -89,23 +102,28 @@ Texture read_texture_file(const std::filesystem::path& path, const std::string& 
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(file, where, "no image file \"" + path.string() + "\"");
+    std::ifstream in(path, std::ios::binary);
+    const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                           std::istreambuf_iterator<char>());
     codec::Pixels<std::uint8_t> px;
-    check(png_file(path) ? read_png_file(path.string(), px)
-                         : module(file, where).read_bytes(path.string(), px),
-          file, where);
+    std::string problem;
+    if (!decode_here(bytes, px, problem))
+        problem = module(file, where).read_bytes(path.string(), px);
+    else if (!problem.empty())
+        problem = "cannot read the image \"" + path.string() + "\": " + problem;
+    check(problem, file, where);
     return texture_from(px, path.string());
 }
 
 Texture decode_texture_bytes(const std::vector<unsigned char>& bytes, const std::string& extension,
                              const std::string& file, const std::string& where) {
     codec::Pixels<std::uint8_t> px;
-    if (is_png(bytes.data(), bytes.size())) {
-        const std::string problem = decode_png(bytes.data(), bytes.size(), px);
-        check(problem.empty() ? problem : "cannot decode the image: " + problem, file, where);
-    } else {
-        check(module(file, where).decode_bytes(bytes.data(), bytes.size(), extension, px), file,
-              where);
-    }
+    std::string problem;
+    if (!decode_here(bytes, px, problem))
+        problem = module(file, where).decode_bytes(bytes.data(), bytes.size(), extension, px);
+    else if (!problem.empty())
+        problem = "cannot decode the image: " + problem;
+    check(problem, file, where);
     return texture_from(px, file + ": " + where);
 }
 

@@ -72,8 +72,6 @@ std::uint8_t to_8_bits(unsigned v) {
     return static_cast<std::uint8_t>((v * 255u + 32767u) / 65535u);
 }
 
-constexpr long long kMaxTexels = 1ll << 26;  // 8192 x 8192, as the codec's bytes_from
-
 // The storage a decode fills, owned by its caller: libpng reports an error by longjmp to
 // the setjmp in decode, whose frame therefore holds nothing with a destructor.
 struct Decoded {
@@ -98,7 +96,7 @@ bool decode(Source& source, Decoded& to, Message& message) {
     png_read_info(png, info);
     const png_uint_32 width = png_get_image_width(png, info),
                       height = png_get_image_height(png, info);
-    if (static_cast<long long>(width) * height > kMaxTexels) {
+    if (static_cast<long long>(width) * height > codec::kMaxTexels) {
         std::snprintf(message, sizeof(Message), "the image is %u x %u (at most 8192 x 8192)", width,
                       height);
         png_destroy_read_struct(&png, &info, nullptr);

@@ -12,7 +12,7 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DRTVIEW_FUZZ=ON -DCMAKE_
     -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" >/dev/null
 cmake --build build-fuzz
 status=0
-for target in json:fuzz_scene_json obj:fuzz_obj bvh:fuzz_bvh gltf:fuzz_gltf mesh:fuzz_ply_stl png:fuzz_png; do
+for target in json:fuzz_scene_json obj:fuzz_obj bvh:fuzz_bvh gltf:fuzz_gltf mesh:fuzz_ply_stl image:fuzz_image; do
     corpus=${target%%:*} binary=${target#*:}
     work=build-fuzz/corpus-$corpus
     mkdir -p "$work"

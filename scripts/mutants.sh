@@ -106,6 +106,16 @@ mutant png-read-trns-dropped core/png_file.cpp \
 mutant png-read-past-the-end core/png_file.cpp \
     'if (n > source->size - source->at)' 'if (false)' \
     rt_tests $(unit 'Texture.*')
+# JPEG textures read by libjpeg as OpenImageIO read them (Texture.Jpeg*, Texture.ACutJpeg*).
+mutant jpeg-cut-file-said-nothing core/jpeg_file.cpp \
+    'if (error.ended_early) {' 'if (false) {' \
+    rt_tests $(unit 'Texture.*')
+mutant jpeg-fast-inverse-dct core/jpeg_file.cpp \
+    'jpeg_start_decompress(&info);' 'info.dct_method = JDCT_IFAST; jpeg_start_decompress(&info);' \
+    rt_tests $(unit 'Texture.*')
+mutant jpeg-cmyk-not-left-to-the-codec core/jpeg_file.cpp \
+    'if (info.jpeg_color_space == JCS_CMYK || info.jpeg_color_space == JCS_YCCK) {' 'if (false) {' \
+    rt_tests $(unit 'Texture.*')
 # A PLY's body checked before Assimp reads it (core/ply_check.cpp).
 mutant ply-ascii-missing-faces-ignored core/ply_check.cpp \
     'if (!lines.next(words))' 'if (!lines.next(words)) return; if (false)' \

@@ -8,7 +8,7 @@ packages=(
   dpkg-dev file                       # cpack -G DEB: dpkg-shlibdeps finds the package's dependencies
   libglm-dev                          # vector maths
   libopenimageio-dev openimageio-tools  # image files and comparison (idiff)
-  libpng-dev                          # PNG output (without loading OpenImageIO)
+  libpng-dev libjpeg-dev              # PNG files, JPEG textures (without loading OpenImageIO)
   nlohmann-json3-dev                  # scene files
   libtinyobjloader-dev                # OBJ + MTL meshes
   libtinygltf-dev                     # glTF 2.0 scenes

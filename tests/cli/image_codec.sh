@@ -3,9 +3,9 @@
 # only when an image other than a PNG is read or written (core/image_codec.h):
 #   - no program, nor the test programs, needs it to start (ldd);
 #   - rtrender's --help, a bad scene's one-line error, a render to PNG and a scene whose
-#     textures are PNG never load it (the dynamic linker's own account, LD_DEBUG=files),
-#     nor does rtview's --help;
-#   - an EXR, and a JPEG texture, do: the check above can see it.
+#     textures are PNG or JPEG never load it (the dynamic linker's own account,
+#     LD_DEBUG=files), nor does rtview's --help;
+#   - an EXR, and a CMYK JPEG texture (left to the codec), do: the check above can see it.
 #   image_codec.sh ASSETS_DIR TEST_DATA_DIR BAD_SCENE PROGRAM...   (rtrender first)
 set -u
 assets=$1 data=$2 bad=$3
@@ -48,8 +48,10 @@ loads "a render to EXR" YES "$rtrender" "$scene" --size 32x24 -q -o "$work/t.exr
 [ -s "$work/t.exr" ] || fail "no EXR written"
 loads "a scene with PNG textures" NO "$rtrender" "$assets/scenes/textured.json" --size 32x24 -q -o "$work/x.png"
 [ -s "$work/x.png" ] || fail "no PNG written for the textured scene"
-loads "a JPEG texture" YES "$rtrender" "$data/jpeg/quad.obj" --size 32x24 -q -o "$work/j.png"
+loads "a JPEG texture" NO "$rtrender" "$data/jpeg/quad.obj" --size 32x24 -q -o "$work/j.png"
 [ -s "$work/j.png" ] || fail "no PNG written for the JPEG-textured model"
+loads "a CMYK JPEG texture" YES "$rtrender" "$data/jpeg/cmyk_quad.obj" --size 32x24 -q -o "$work/c.png"
+[ -s "$work/c.png" ] || fail "no PNG written for the CMYK-textured model"
 for program in "$@"; do
     case $(basename "$program") in
         rtview) loads "rtview --help" NO "$program" --help ;;

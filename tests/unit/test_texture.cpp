@@ -15,6 +15,7 @@
 #include "core/gltf_loader.h"
 #include "core/image.h"
 #include "core/image_codec.h"
+#include "core/jpeg_file.h"
 #include "core/obj_loader.h"
 #include "core/png_file.h"
 #include "core/scene_loader.h"
@@ -207,6 +208,76 @@ TEST(Texture, ABrokenPngIsOneLineNotACrash) {
     munmap(pages, 2 * static_cast<std::size_t>(page));
     const unsigned char jpeg[] = {0xff, 0xd8, 0xff, 0xe0, 0, 16, 'J', 'F', 'I', 'F'};
     EXPECT_FALSE(is_png(jpeg, sizeof jpeg));
+}
+
+// JPEG textures are read by libjpeg (core/jpeg_file.cpp): each subsampling, progressive,
+// with restart markers, grey, at sizes that are not whole blocks (tests/data/jpeg/make.sh),
+// byte for byte as OpenImageIO reads them; a CMYK file is left to the codec.
+TEST(Texture, JpegFilesReadAsTheCodecReadsThem) {
+    const codec::ImageCodec& oiio = codec::module("test", "codec");
+    int read = 0, left = 0;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(test::source_dir() / "tests/data/jpeg")) {
+        if (entry.path().extension() != ".jpg") continue;
+        SCOPED_TRACE(entry.path().string());
+        const std::vector<unsigned char> bytes = file_bytes(entry.path());
+        codec::Pixels<std::uint8_t> ours, theirs;
+        const JpegRead mine = decode_jpeg(bytes.data(), bytes.size(), ours);
+        ASSERT_EQ(oiio.read_bytes(entry.path().string(), theirs), "");
+        if (!mine.handled) {
+            EXPECT_EQ(entry.path().filename(), "cmyk.jpg");
+            ++left;
+            continue;
+        }
+        ++read;
+        ASSERT_EQ(mine.problem, "");
+        EXPECT_EQ(ours.width, theirs.width);
+        EXPECT_EQ(ours.height, theirs.height);
+        EXPECT_EQ(ours.channels, theirs.channels);
+        EXPECT_TRUE(ours.data == theirs.data);
+        // And as a texture, through whichever reader takes it.
+        const Texture t = read_texture(entry.path(), "scene.obj", "map_Kd");
+        EXPECT_EQ(t.width, theirs.width);
+    }
+    EXPECT_EQ(read, 7);
+    EXPECT_EQ(left, 1);
+    EXPECT_EQ(read_texture(test::source_dir() / "tests/data/jpeg/cmyk.jpg", "s", "w").width, 37);
+}
+
+// A JPEG cut short was read by OpenImageIO without a word, its missing rows grey: now it
+// is one line naming the file, and nothing past the bytes given is read.
+TEST(Texture, ACutJpegIsOneLineNotAGreyImage) {
+    const std::vector<unsigned char> good =
+        file_bytes(test::source_dir() / "tests/data/jpeg/grid.jpg");
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / "rtview_cut.jpg";
+    const long page = sysconf(_SC_PAGESIZE);
+    ASSERT_LE(good.size(), static_cast<std::size_t>(page));
+    auto* const pages = static_cast<unsigned char*>(
+        mmap(nullptr, 2 * static_cast<std::size_t>(page), PROT_READ | PROT_WRITE,
+             MAP_PRIVATE | MAP_ANONYMOUS, -1, 0));
+    ASSERT_NE(pages, MAP_FAILED);
+    ASSERT_EQ(mprotect(pages + page, static_cast<std::size_t>(page), PROT_NONE), 0);
+    for (std::size_t keep = 3; keep + 2 < good.size(); keep += 37) {
+        SCOPED_TRACE(keep);
+        unsigned char* const at = pages + page - keep;
+        std::memcpy(at, good.data(), keep);
+        codec::Pixels<std::uint8_t> px;
+        const JpegRead cut = decode_jpeg(at, keep, px);
+        EXPECT_TRUE(cut.handled);
+        EXPECT_NE(cut.problem, "");
+        EXPECT_EQ(cut.problem.find('\n'), std::string::npos) << cut.problem;
+        std::ofstream(path, std::ios::binary)
+            .write(reinterpret_cast<const char*>(at), static_cast<std::streamsize>(keep));
+        try {
+            (void)read_texture(path, "scene.obj", "map_Kd");
+            ADD_FAILURE() << "read without an error";
+        } catch (const Error& e) {
+            const std::string what = e.what();
+            EXPECT_EQ(what.rfind("scene.obj: map_Kd: cannot read the image", 0), 0u) << what;
+        }
+    }
+    munmap(pages, 2 * static_cast<std::size_t>(page));
+    std::filesystem::remove(path);
 }
 
 }  // namespace
