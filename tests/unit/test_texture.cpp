@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "core/gltf_loader.h"
@@ -112,6 +113,51 @@ std::vector<unsigned char> file_bytes(const std::filesystem::path& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// Bytes placed so that they end where an unreadable page begins: a reader that looks
+// past their end stops the test.
+class GuardedBytes {
+  public:
+    GuardedBytes()
+        : page_(static_cast<std::size_t>(sysconf(_SC_PAGESIZE))),
+          pages_(static_cast<unsigned char*>(mmap(nullptr, 2 * page_, PROT_READ | PROT_WRITE,
+                                                  MAP_PRIVATE | MAP_ANONYMOUS, -1, 0))) {
+        if (pages_ == MAP_FAILED || mprotect(pages_ + page_, page_, PROT_NONE) != 0)
+            throw std::runtime_error("GuardedBytes: no guard page");
+    }
+    ~GuardedBytes() { munmap(pages_, 2 * page_); }
+    GuardedBytes(const GuardedBytes&) = delete;
+    GuardedBytes& operator=(const GuardedBytes&) = delete;
+
+    // The first n (at most a page) of `bytes`, ending at the guard.
+    const unsigned char* place(const std::vector<unsigned char>& bytes, std::size_t n) {
+        if (n > page_ || n > bytes.size()) throw std::runtime_error("GuardedBytes: too many");
+        unsigned char* const at = pages_ + page_ - n;
+        std::memcpy(at, bytes.data(), n);
+        return at;
+    }
+
+  private:
+    std::size_t page_;
+    unsigned char* pages_;
+};
+
+// Read as a texture from a file, the bytes are one line naming the file and the image.
+void expect_refused_as_texture(const unsigned char* bytes, std::size_t size,
+                               const std::string& name) {
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / name;
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes), static_cast<std::streamsize>(size));
+    try {
+        (void)read_texture(path, "scene.obj", "map_Kd");
+        ADD_FAILURE() << "read without an error";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.rfind("scene.obj: map_Kd: cannot read the image", 0), 0u) << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+    std::filesystem::remove(path);
+}
+
 // PNG textures are read by libpng (core/png_file.cpp), so that a textured scene does not
 // load OpenImageIO; they must read as OpenImageIO read them before: every colour type and
 // bit depth (tests/data/png/make.sh), a tRNS chunk, interlacing, every 16-bit value once,
@@ -171,41 +217,20 @@ TEST(Texture, ABrokenPngIsOneLineNotACrash) {
         broken.emplace_back(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(keep));
     broken.push_back(good);
     broken.back()[30] ^= 0x55u;  // inside IHDR or the chunk after it: a checksum that fails
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / "rtview_broken.png";
     for (const auto& bytes : broken) {
         SCOPED_TRACE(bytes.size());
         codec::Pixels<std::uint8_t> px;
         const std::string problem = decode_png(bytes.data(), bytes.size(), px);
         EXPECT_NE(problem, "");
         EXPECT_EQ(problem.find('\n'), std::string::npos) << problem;
-        std::ofstream(path, std::ios::binary)
-            .write(reinterpret_cast<const char*>(bytes.data()),
-                   static_cast<std::streamsize>(bytes.size()));
-        try {
-            (void)read_texture(path, "scene.obj", "map_Kd");
-            ADD_FAILURE() << "read without an error";
-        } catch (const Error& e) {
-            const std::string what = e.what();
-            EXPECT_EQ(what.rfind("scene.obj: map_Kd: cannot read the image", 0), 0u) << what;
-            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-        }
+        expect_refused_as_texture(bytes.data(), bytes.size(), "rtview_broken.png");
     }
-    std::filesystem::remove(path);
-    // From memory, nothing past the bytes given is read: each cut file ends where an
-    // unreadable page begins, so a read past its end would stop the test.
-    const long page = sysconf(_SC_PAGESIZE);
-    auto* const pages = static_cast<unsigned char*>(
-        mmap(nullptr, 2 * static_cast<std::size_t>(page), PROT_READ | PROT_WRITE,
-             MAP_PRIVATE | MAP_ANONYMOUS, -1, 0));
-    ASSERT_NE(pages, MAP_FAILED);
-    ASSERT_EQ(mprotect(pages + page, static_cast<std::size_t>(page), PROT_NONE), 0);
+    // From memory, nothing past the bytes given is read.
+    GuardedBytes guarded;
     for (std::size_t keep = 8; keep <= std::min<std::size_t>(good.size(), 2000); keep += 7) {
-        unsigned char* const at = pages + page - keep;
-        std::memcpy(at, good.data(), keep);
         codec::Pixels<std::uint8_t> px;
-        EXPECT_NE(decode_png(at, keep, px), "") << keep;
+        EXPECT_NE(decode_png(guarded.place(good, keep), keep, px), "") << keep;
     }
-    munmap(pages, 2 * static_cast<std::size_t>(page));
     const unsigned char jpeg[] = {0xff, 0xd8, 0xff, 0xe0, 0, 16, 'J', 'F', 'I', 'F'};
     EXPECT_FALSE(is_png(jpeg, sizeof jpeg));
 }
@@ -249,35 +274,17 @@ TEST(Texture, JpegFilesReadAsTheCodecReadsThem) {
 TEST(Texture, ACutJpegIsOneLineNotAGreyImage) {
     const std::vector<unsigned char> good =
         file_bytes(test::source_dir() / "tests/data/jpeg/grid.jpg");
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / "rtview_cut.jpg";
-    const long page = sysconf(_SC_PAGESIZE);
-    ASSERT_LE(good.size(), static_cast<std::size_t>(page));
-    auto* const pages = static_cast<unsigned char*>(
-        mmap(nullptr, 2 * static_cast<std::size_t>(page), PROT_READ | PROT_WRITE,
-             MAP_PRIVATE | MAP_ANONYMOUS, -1, 0));
-    ASSERT_NE(pages, MAP_FAILED);
-    ASSERT_EQ(mprotect(pages + page, static_cast<std::size_t>(page), PROT_NONE), 0);
+    GuardedBytes guarded;
     for (std::size_t keep = 3; keep + 2 < good.size(); keep += 37) {
         SCOPED_TRACE(keep);
-        unsigned char* const at = pages + page - keep;
-        std::memcpy(at, good.data(), keep);
+        const unsigned char* const at = guarded.place(good, keep);
         codec::Pixels<std::uint8_t> px;
         const JpegRead cut = decode_jpeg(at, keep, px);
         EXPECT_TRUE(cut.handled);
         EXPECT_NE(cut.problem, "");
         EXPECT_EQ(cut.problem.find('\n'), std::string::npos) << cut.problem;
-        std::ofstream(path, std::ios::binary)
-            .write(reinterpret_cast<const char*>(at), static_cast<std::streamsize>(keep));
-        try {
-            (void)read_texture(path, "scene.obj", "map_Kd");
-            ADD_FAILURE() << "read without an error";
-        } catch (const Error& e) {
-            const std::string what = e.what();
-            EXPECT_EQ(what.rfind("scene.obj: map_Kd: cannot read the image", 0), 0u) << what;
-        }
+        expect_refused_as_texture(at, keep, "rtview_cut.jpg");
     }
-    munmap(pages, 2 * static_cast<std::size_t>(page));
-    std::filesystem::remove(path);
 }
 
 }  // namespace
