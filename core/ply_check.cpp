@@ -16,6 +16,8 @@ struct PlyProperty {
     int count_bytes = 0;  // a list's length: its type's bytes in a binary body
     int value_bytes = 0;  // one value (of the list, for a list)
     bool count_signed = false;
+    bool value_signed = false, value_float = false;
+    bool vertex_indices = false;  // a face's list of vertex indices: each must name a vertex
 };
 
 struct PlyElement {
@@ -29,7 +31,8 @@ enum class Format { kAscii, kLittle, kBig };
 struct Header {
     Format format = Format::kAscii;
     std::vector<PlyElement> elements;
-    int lines = 0;  // the header's, end_header included
+    int lines = 0;               // the header's, end_header included
+    std::uint64_t vertices = 0;  // the vertex element's count
 };
 
 // The bytes one value of a PLY type takes in a binary body (Assimp's names too).
@@ -55,8 +58,8 @@ Header read_header(const std::string& file, std::istream& in) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line == "end_header") return h;
         std::istringstream words(line);
-        std::string keyword, a, b, c;
-        words >> keyword >> a >> b >> c;
+        std::string keyword, a, b, c, d;  // a list property: list COUNT_TYPE VALUE_TYPE NAME
+        words >> keyword >> a >> b >> c >> d;
         if (keyword == "format")
             h.format = a == "ascii"               ? Format::kAscii
                        : a == "binary_big_endian" ? Format::kBig
@@ -65,13 +68,20 @@ Header read_header(const std::string& file, std::istream& in) {
             PlyElement e{a, 0, {}};
             const auto [end, ec] = std::from_chars(b.data(), b.data() + b.size(), e.count);
             if (ec == std::errc{} && end == b.data() + b.size()) h.elements.push_back(e);
+            if (a == "vertex") h.vertices = e.count;
         }
         if (keyword == "property" && !h.elements.empty()) {
             PlyProperty p;
             p.list = a == "list";
             p.count_bytes = p.list ? type_bytes(b) : 0;
             p.count_signed = p.list && signed_type(b);
-            p.value_bytes = type_bytes(p.list ? c : a);
+            const std::string& value_type = p.list ? c : a;
+            p.value_bytes = type_bytes(value_type);
+            p.value_signed = signed_type(value_type);
+            p.value_float = value_type.find("float") != std::string::npos || value_type == "double";
+            const std::string& name = p.list ? d : b;
+            p.vertex_indices = p.list && h.elements.back().name == "face" &&
+                               (name == "vertex_indices" || name == "vertex_index");
             h.elements.back().properties.push_back(p);
         }
     }
@@ -102,6 +112,23 @@ void check_counts(const std::string& file, const Header& h, std::uint64_t body_b
 
 std::string ordinal(std::uint64_t i, const PlyElement& e) {
     return e.name + " " + std::to_string(i + 1) + " of the " + std::to_string(e.count);
+}
+
+std::string no_such_vertex(std::uint64_t i, const PlyElement& e, const std::string& index,
+                           const Header& h) {
+    return ordinal(i, e) + " names vertex " + index + ", not one of the " +
+           std::to_string(h.vertices) + " (counted from 0)";
+}
+
+// A binary value of `bytes` bytes in the file's byte order, as a whole number (signed
+// types sign-extended).
+long long binary_integer(const unsigned char* at, int bytes, bool is_signed, Format format) {
+    std::uint64_t bits = 0;
+    for (int k = 0; k < bytes; ++k)
+        bits = bits << 8 | at[format == Format::kBig ? k : bytes - 1 - k];
+    if (is_signed && bytes < 8 && (bits >> (8 * bytes - 1)) != 0)
+        bits |= ~std::uint64_t{0} << (8 * bytes);
+    return static_cast<long long>(bits);
 }
 
 // Whether a word is a decimal number as PLY's ASCII body writes one (an optional sign,
@@ -197,7 +224,15 @@ void check_ascii(const std::string& file, const Header& h, std::string_view body
                         ordinal(i, e) + ": \"" + std::string(first) + "\" is not a list's length");
                 if (length > words.size() - next)
                     throw Error(file, where, ordinal(i, e) + " ends before its last value");
-                for (std::uint64_t k = 0; k < length; ++k) take();
+                for (std::uint64_t k = 0; k < length; ++k) {
+                    const std::string_view w = take();
+                    if (!p.vertex_indices) continue;
+                    long long index = -1;
+                    const auto [at, code] = std::from_chars(w.data(), w.data() + w.size(), index);
+                    if (code != std::errc{} || at != w.data() + w.size() || index < 0 ||
+                        static_cast<std::uint64_t>(index) >= h.vertices)
+                        throw Error(file, where, no_such_vertex(i, e, std::string(w), h));
+                }
             }
         }
     }
@@ -251,7 +286,17 @@ void check_binary(const std::string& file, const Header& h, std::string_view bod
                 if (length > static_cast<std::uint64_t>(end - at) /
                                  static_cast<std::uint64_t>(p.value_bytes))
                     throw ends(i);
-                at += length * static_cast<std::uint64_t>(p.value_bytes);
+                if (p.vertex_indices && !p.value_float) {
+                    for (std::uint64_t k = 0; k < length; ++k, at += p.value_bytes) {
+                        const long long index =
+                            binary_integer(at, p.value_bytes, p.value_signed, h.format);
+                        if (index < 0 || static_cast<std::uint64_t>(index) >= h.vertices)
+                            throw Error(file, "element " + e.name,
+                                        no_such_vertex(i, e, std::to_string(index), h));
+                    }
+                } else {
+                    at += length * static_cast<std::uint64_t>(p.value_bytes);
+                }
             }
         }
     }

@@ -538,6 +538,13 @@ mutant item-buffer-edges-take-their-hits-as-fresh core/scene.h \
 mutant item-buffer-fresh-hit-keeps-no-object core/scene.cpp \
     '            hits[lane].object = object;' '' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
+mutant ply-binary-vertex-index-unchecked core/ply_check.cpp \
+    'if (index < 0 || static_cast<std::uint64_t>(index) >= h.vertices)' 'if (index < 0)' \
+    rt_tests $(unit 'PlyStl.*')
+mutant ply-ascii-vertex-index-off-by-one core/ply_check.cpp \
+    '                        static_cast<std::uint64_t>(index) >= h.vertices)' \
+    '                        static_cast<std::uint64_t>(index) > h.vertices)' \
+    rt_tests $(unit 'PlyStl.*')
 mutant ply-header-unchecked core/assimp_loader.cpp \
     '        check_ply(file, in, std::filesystem::file_size(path, ec));' '' \
     rt_tests timeout 60 $(unit 'PlyStl.*')

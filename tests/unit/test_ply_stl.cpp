@@ -123,10 +123,10 @@ TEST(PlyStl, AByteOrderMarkIsReadAndCutFilesAreRefused) {
     EXPECT_EQ(empty_face.mesh.triangles.size(), 1u);
 }
 
-// A body cut short, or a value that is not one, is one error at its line (ASCII) or
-// element (binary), before Assimp reads it: Assimp took a cut ASCII file's faces as
-// fewer faces, or made up a cut face's last index (exit 0, a silently wrong mesh), and
-// gave a binary one's out-of-range indices as its own message with no place.
+// A body cut short, a value that is not one, or a face naming a vertex the file does not
+// have is one error at its line (ASCII) or element (binary), before Assimp reads it: Assimp took a
+// cut ASCII file's faces as fewer faces, or made up a cut face's last index (exit 0, a silently
+// wrong mesh), and gave a binary one's out-of-range indices as its own message with no place.
 TEST(PlyStl, ACutOrMalformedBodyIsOneLocatedError) {
     const auto dir = test::temp_dir("ply_body");
     const auto header = [](const std::string& format, const std::string& count_type) {
@@ -144,6 +144,8 @@ TEST(PlyStl, ACutOrMalformedBodyIsOneLocatedError) {
         {ascii + "0 0 0\n1 0\n0 1 0\n3 0 1 2\n3 0 2 1\n", "line 11"},
         {ascii + corners + "-1 0 1 2\n3 0 2 1\n", "line 13"},
         {ascii + corners + "2.5 0 1 2\n3 0 2 1\n", "line 13"},
+        {ascii + corners + "3 0 1 3\n3 0 2 1\n", "line 13"},   // no vertex 3
+        {ascii + corners + "3 0 1 2\n3 0 -1 1\n", "line 14"},  // nor vertex -1
     };
     for (const auto& [bytes, where] : bad) {
         try {
@@ -173,8 +175,9 @@ TEST(PlyStl, ACutOrMalformedBodyIsOneLocatedError) {
             put(3, 2);
             for (const int i : face) put(static_cast<std::uint32_t>(i), 4);
         }
-        const std::string whole =
-            header(big ? "binary_big_endian" : "binary_little_endian", "ushort") + body;
+        const std::string head =
+            header(big ? "binary_big_endian" : "binary_little_endian", "ushort");
+        const std::string whole = head + body;
         EXPECT_EQ(load_ply_stl(test::write_file(dir / "whole.ply", whole)).mesh.triangles.size(),
                   2u);
         for (std::size_t cut = 1; cut <= 2 * 14; ++cut) {
@@ -185,6 +188,16 @@ TEST(PlyStl, ACutOrMalformedBodyIsOneLocatedError) {
             } catch (const Error& e) {
                 EXPECT_EQ(e.where(), "element face") << e.what();
             }
+        }
+        // The last face's last index turned into 3: a vertex the file does not have.
+        std::string past = whole;
+        past[big ? past.size() - 1 : past.size() - 4] = 3;
+        try {
+            load_ply_stl(test::write_file(dir / "past.ply", past));
+            ADD_FAILURE() << "a face naming vertex 3 of 3 loaded";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.detail(),
+                      "face 2 of the 2 names vertex 3, not one of the 3 (counted from 0)");
         }
     }
 }
