@@ -5,6 +5,7 @@
 #include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
@@ -56,20 +57,48 @@ using detail::tile_count;
 using detail::TileRays;
 using detail::TileRunner;
 
-// The objects named around pixels x0 .. x1 of row y (their 3 x 3 blocks), each once.
+// The objects named around pixels x0 .. x1 of row y (their 3 x 3 blocks), each once, in
+// the order they first appear (rows upwards, each left to right). The three rows' ids,
+// at most kPacketWidth + 2 each, sit in two vectors a row; each object found clears its
+// id from all six at once, so the work goes with the few objects there are, not with the
+// thirty ids (many_spheres: 13.5 % of its pixels are on an edge, and the scalar search,
+// a branch per id, cost the edge pixels more than their tests did).
 int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* out) {
-    int count = 0;
-    std::uint32_t last = ItemBuffer::kEmpty;  // neighbours mostly repeat the id before them
+    using Ids = ItemBuffer::Ids;
+    constexpr int kRow = 2 * kPacketWidth;
     const int left = std::max(0, x0 - 1), right = std::min(ib.width - 1, x1 + 1);
+    const int span = right - left + 1;  // at most kPacketWidth + 2 <= kRow
+    Ids ids[6];
+    int vectors = 0;
+    static const Ids kLane = [] {
+        Ids lane{};
+        for (int k = 0; k < kPacketWidth; ++k) lane[k] = static_cast<std::uint32_t>(k);
+        return lane;
+    }();
+    const Ids in_span[2] = {Ids(kLane < Ids{} + static_cast<std::uint32_t>(span)),
+                            Ids(kLane + kPacketWidth < Ids{} + static_cast<std::uint32_t>(span))};
     for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {
-        const std::uint32_t* ids = &ib.object[ib.index(0, row)];
-        for (int x = left; x <= right; ++x) {
-            const std::uint32_t id = ids[x];
-            if (id == last) continue;
-            last = id;
-            if (id != ItemBuffer::kEmpty && std::find(out, out + count, id - 1) == out + count)
-                out[count++] = id - 1;
+        const std::uint32_t* at = &ib.object[ib.index(left, row)];
+        if (left + kRow <= ib.width) {  // two whole vectors in the row: the span's lanes kept
+            ids[vectors++] = ItemBuffer::load(at) & in_span[0];
+            ids[vectors++] = ItemBuffer::load(at + kPacketWidth) & in_span[1];
+            continue;
         }
+        std::uint32_t padded[kRow] = {};  // kEmpty beyond the span
+        std::memcpy(padded, at, static_cast<std::size_t>(span) * sizeof *at);
+        ids[vectors++] = ItemBuffer::load(padded);
+        ids[vectors++] = ItemBuffer::load(padded + kPacketWidth);
+    }
+    int count = 0;
+    for (int v = 0; v < vectors;) {
+        const unsigned named = bits(Lanes<kPacketWidth>::Mask(ids[v] != Ids{}));
+        if (named == 0) {
+            ++v;
+            continue;
+        }
+        const std::uint32_t id = ids[v][__builtin_ctz(named)];
+        out[count++] = id - 1;
+        for (int k = v; k < vectors; ++k) ids[k] &= ~(ids[k] == (Ids{} + id));
     }
     return count;
 }

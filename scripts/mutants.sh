@@ -517,6 +517,14 @@ mutant edge-pixels-look-along-their-row-only core/renderer.cpp \
     'for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {' \
     'for (int row = y; row <= y; ++row) {' \
     rt_tests $(unit 'ItemBuffer.*')
+mutant objects-around-drop-the-right-neighbours core/renderer.cpp \
+    'ids[vectors++] = ItemBuffer::load(at + kPacketWidth) & in_span[1];' \
+    'ids[vectors++] = ItemBuffer::load(at + kPacketWidth) & Ids{};' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant objects-around-first-found-not-cleared core/renderer.cpp \
+    'for (int k = v; k < vectors; ++k) ids[k] &= ~(ids[k] == (Ids{} + id));' \
+    'for (int k = v + 1; k < vectors; ++k) ids[k] &= ~(ids[k] == (Ids{} + id));' \
+    rt_tests timeout 60 $(unit 'ItemBuffer.*')
 mutant per-lane-triangles-all-named-the-first core/mesh_packet.cpp \
     'hits[ray].prim = prims[ray];' 'hits[ray].prim = first;' \
     rt_tests $(unit 'ScenePackets.*')
