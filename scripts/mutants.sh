@@ -492,8 +492,8 @@ mutant feeler-skips-a-sphere-seen-from-inside core/scene.cpp \
 mutant packet-mesh-sees-world-rays core/scene.cpp \
     'intersect_packet(local.data(), hits, lanes)' 'intersect_packet(rays, hits, lanes)' \
     rt_tests $(unit 'ScenePackets.*')
-mutant item-buffer-interior-misses-a-column core/item_buffer.h \
-    'for (int dx = 0; dx < 3; ++dx)' 'for (int dx = 0; dx < 2; ++dx)' \
+mutant item-buffer-interior-misses-the-one-above core/item_buffer.h \
+    '(at[-width] ^ id) | (at[width] ^ id)) == 0;' '(at[-width] ^ id)) == 0;' \
     rt_tests $(unit 'ItemBuffer.Interior*')
 mutant item-buffer-packet-lanes-unmasked core/mesh_packet.cpp \
     '1u << (at % kTriangle4Lanes));' '0xfu);' \
@@ -508,7 +508,8 @@ mutant ray-lanes-lose-the-translation core/ray_lanes.h \
     '(m[2][row] * v[2] + m[3][row] * w)' '(m[2][row] * v[2])' \
     rt_tests $(unit 'RayLanes.*')
 mutant interior-run-sees-no-side-neighbour core/item_buffer.h \
-    'dy * static_cast<std::ptrdiff_t>(width) + dx)' 'dy * static_cast<std::ptrdiff_t>(width))' \
+    'const Ids differ = (load(centre - 1) ^ id) | (load(centre + 1) ^ id) |' \
+    'const Ids differ = (load(centre + 1) ^ id) |' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant item-buffer-run-never-falls-back core/renderer.cpp \
     'const unsigned edge = all & ~settled;' 'const unsigned edge = 0;' \
