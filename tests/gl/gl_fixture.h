@@ -38,6 +38,13 @@ class GlTest : public ::testing::TestWithParam<gl::Backend> {
     std::uint64_t errors_before_ = gl::debug_error_count();
 };
 
+// Each test suite runs on both kinds, its tests named .../egl and .../osmesa:
+//   INSTANTIATE_TEST_SUITE_P(Headless, Suite, kBackends, backend_name);
+inline const auto kBackends = ::testing::Values(gl::Backend::kEgl, gl::Backend::kOsmesa);
+inline std::string backend_name(const ::testing::TestParamInfo<gl::Backend>& info) {
+    return info.param == gl::Backend::kEgl ? "egl" : "osmesa";
+}
+
 // The shipped scenes every pass is checked on.
 inline const char* const kScenes[] = {"tutorial.json", "whitted.json", "cornell.json",
                                       "many_spheres.json"};

@@ -630,10 +630,7 @@ TEST(GlContexts, DestroyingOneEglContextLeavesTheOtherWorking) {
     EXPECT_GT(lit, 64 * 48 / 4);
 }
 
-INSTANTIATE_TEST_SUITE_P(Headless, Gl, ::testing::Values(gl::Backend::kEgl, gl::Backend::kOsmesa),
-                         [](const auto& param_info) {
-                             return param_info.param == gl::Backend::kEgl ? "egl" : "osmesa";
-                         });
+INSTANTIATE_TEST_SUITE_P(Headless, Gl, kBackends, backend_name);
 
 }  // namespace
 }  // namespace rt

@@ -75,11 +75,7 @@ TEST_P(GpuSceneGl, TheDrawListLeavesOutWhatTheCameraCannotSeeAndOnlyThat) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Headless, GpuSceneGl,
-                         ::testing::Values(gl::Backend::kEgl, gl::Backend::kOsmesa),
-                         [](const auto& param_info) {
-                             return param_info.param == gl::Backend::kEgl ? "egl" : "osmesa";
-                         });
+INSTANTIATE_TEST_SUITE_P(Headless, GpuSceneGl, kBackends, backend_name);
 
 }  // namespace
 }  // namespace rt

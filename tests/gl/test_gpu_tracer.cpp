@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
+#include "gl_fixture.h"
 
 namespace rt {
 namespace {
@@ -155,11 +156,7 @@ TEST_P(GpuTrace, ASceneWithoutObjectsIsBackground) {
     for (const vec3& p : image.pixels) EXPECT_EQ(p, scene.background);
 }
 
-INSTANTIATE_TEST_SUITE_P(Headless, GpuTrace,
-                         ::testing::Values(gl::Backend::kEgl, gl::Backend::kOsmesa),
-                         [](const auto& param_info) {
-                             return param_info.param == gl::Backend::kEgl ? "egl" : "osmesa";
-                         });
+INSTANTIATE_TEST_SUITE_P(Headless, GpuTrace, kBackends, backend_name);
 
 }  // namespace
 }  // namespace rt

@@ -296,11 +296,7 @@ TEST_P(GlItemBuffer, TheItemViewShowsPackedIdsAsTheirObjects) {
     EXPECT_GT(objects, ids.object.size() / 4);
 }
 
-INSTANTIATE_TEST_SUITE_P(Headless, GlItemBuffer,
-                         ::testing::Values(gl::Backend::kEgl, gl::Backend::kOsmesa),
-                         [](const auto& param_info) {
-                             return param_info.param == gl::Backend::kEgl ? "egl" : "osmesa";
-                         });
+INSTANTIATE_TEST_SUITE_P(Headless, GlItemBuffer, kBackends, backend_name);
 
 }  // namespace
 }  // namespace rt
