@@ -143,7 +143,7 @@ struct Builder {
     PrimRef* scratch;  // as large as refs: the other side of every other partition
     std::uint32_t max_leaf;
     std::uint32_t split_above;  // up to max_leaf: a leaf only where a split does not pay
-    std::vector<BvhNode> nodes;
+    LargeArray<BvhNode> nodes;
     TaskPool* pool = nullptr;  // none: all on this thread
 
     int parts(std::uint32_t begin, std::uint32_t end) const {
@@ -370,7 +370,7 @@ struct Builder {
         // The right subtree to the pool (into nodes of its own) while this thread builds the
         // left; a small one here after it.
         TaskPool::Group group;
-        std::vector<BvhNode> right_nodes;
+        LargeArray<BvhNode> right_nodes;
         const bool fork = pool && end - mid >= kMinSubtree && mid - begin >= kMinSubtree;
         if (fork)
             pool->run(group, [&, r, right = split.right] {

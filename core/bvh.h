@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/aabb.h"
+#include "core/large_array.h"
 
 namespace rt {
 
@@ -65,7 +66,7 @@ class Bvh {
     }
 
   private:
-    std::vector<BvhNode> nodes_;
+    LargeArray<BvhNode> nodes_;
     std::vector<std::uint32_t> prims_;
 };
 

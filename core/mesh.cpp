@@ -27,7 +27,7 @@ void TriangleMesh::build(AccelKind kind, int threads) {
     // The triangles' boxes on one thread: in parts on two, the first touch of a fresh
     // array faults its pages from both at once, which was slower here (a million
     // triangles: 6.2-7.8 ms against 5.8 ms; docs/BENCHMARKS.md, eighth session).
-    std::vector<Aabb> boxes(triangles.size());
+    LargeArray<Aabb> boxes(triangles.size());
     bounds_ = Aabb{};
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         for (int k = 0; k < 3; ++k) boxes[i].grow(positions[triangles[i][k]]);

@@ -610,6 +610,21 @@ mutant oracle-transform-normal core/transform.cpp \
     't.normal = glm::transpose(glm::inverse(linear));' 't.normal = glm::inverse(linear);' \
     rtrender "${oracle[@]}"
 
+# A build's large arrays (core/large_array.cpp): on huge-page boundaries, kept when freed,
+# within a bound, and only for an array of about their size.
+mutant large-array-not-aligned core/large_array.cpp \
+    'char* const start = base + (kHugePageBytes - at % kHugePageBytes) % kHugePageBytes;' \
+    'char* const start = base + (at % kHugePageBytes == 0 ? kHugePageBytes / 2 : 0);' \
+    rt_tests $(unit 'LargeArray.*')
+mutant large-array-never-kept core/large_array.cpp \
+    'if (kept_ + size <= kKeptBytes) {' 'if (false) {' rt_tests $(unit 'LargeArray.*')
+mutant large-array-kept-unbounded core/large_array.cpp \
+    'kKeptBytes = std::size_t{256} << 20;' 'kKeptBytes = ~std::size_t{0} >> 1;' \
+    rt_tests $(unit 'LargeArray.*')
+mutant large-array-kept-block-of-any-size core/large_array.cpp \
+    'blocks_[i].size >= size && blocks_[i].size <= 2 * size &&' 'blocks_[i].size >= size &&' \
+    rt_tests $(unit 'LargeArray.*')
+
 echo "$caught caught, $missed missed, $broken could not be planted"
 [ "$missed" -gt 0 ] && echo "missed: ${missed_names[*]}"
 [ "$missed" -eq 0 ] && [ "$broken" -eq 0 ]
