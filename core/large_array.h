@@ -10,9 +10,9 @@
 // measured).
 //
 // Page faults: on some machines a fault costs as much as the build's arithmetic (docs/
-// BENCHMARKS.md, seventeenth session: 3-11 microseconds for each 4 KiB page on a virtual
+// BENCHMARKS.md, seventeenth session: 6-16 microseconds for each 4 KiB page on a virtual
 // machine; a million-triangle build took its faults again on every rebuild, as the heap
-// maps arrays of 32 MiB and more afresh each time, and ran at 0.6-0.7 of Embree's rate).
+// maps arrays of 32 MiB and more afresh each time, and took 1.2-1.7 times Embree's time).
 // A huge page takes one fault for 512 small ones, and an array kept from the last build
 // takes none. Where the kernel has no huge page to give it uses small ones.
 // RTVIEW_HUGE_PAGES=0 in the environment asks for small pages only (to compare the two,
