@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/compare.h"
+#include "core/small_objects.h"
 #include "core/stopwatch.h"
 #include "core/tile_rays.h"
 #include "core/tile_runner.h"
@@ -113,8 +114,8 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
 // meets is named next to it (the planes too: the raster draws them to within a fraction
 // of a pixel of their horizon, GpuScene::plane_extent). Returns how many pixels were on
 // an edge or missed.
-int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int n,
-                    const RayLanes<kPacketWidth>& lanes, const Ray* rays, Hit* hits) {
+int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects& small, int x,
+                    int y, int n, const RayLanes<kPacketWidth>& lanes, const Ray* rays, Hit* hits) {
     const unsigned all = (1u << n) - 1u;
     reset_hits(hits, static_cast<std::size_t>(n));
     const std::size_t at = ib.index(x, y);
@@ -130,27 +131,47 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, int x, int y, int 
         }
         settled |= scene.intersect_primitive_packet(id - 1, &ib.prim[at], lanes, hits, same, true);
     }
-    const unsigned edge = all & ~settled;
+    // Where an object too small for the raster lies, its pixels are not settled by the ids
+    // (core/small_objects.h): they are tested against it, besides what is named around.
+    std::array<std::uint32_t, 4 * kPacketWidth> tiny;
+    int tiny_count = 0;
+    unsigned under_tiny = 0;
+    bool crowd = false;  // more than `tiny` holds: the whole scene for these pixels
+    for (const SmallObjects::Span& s : small.row(y)) {
+        const int lo = std::max(s.x0, x) - x, hi = std::min(s.x1, x + n - 1) - x;
+        if (lo > hi) continue;
+        under_tiny |= ((2u << hi) - 1u) & ~((1u << lo) - 1u);
+        if (tiny_count < static_cast<int>(tiny.size()))
+            tiny[tiny_count++] = s.object;
+        else
+            crowd = true;
+    }
+    const unsigned edge = all & ~(settled & ~under_tiny);
     if (edge == 0) return 0;
     for (unsigned k = edge; k != 0; k &= k - 1) hits[__builtin_ctz(k)] = Hit{};
+    if (crowd) {
+        scene.intersect_packet(rays, hits, edge);
+        return std::popcount(edge);
+    }
     std::array<std::uint32_t, 3 * (kPacketWidth + 2)> around;
     const int count =
         objects_around(ib, x + __builtin_ctz(edge), x + 31 - __builtin_clz(edge), y, around.data());
     scene.intersect_among(around.data(), count, rays, lanes, hits, edge);
+    scene.intersect_among(tiny.data(), tiny_count, rays, lanes, hits, edge);
     return std::popcount(edge);
 }
 
 // The first hits of a tile's pixels from the item buffer, a row's run of kPacketWidth
 // pixels at a time. Returns how many were traced through the scene.
-std::uint64_t item_buffer_hits(const Scene& scene, const ItemBuffer& ib, const Tile& t,
-                               const TileRays& rays, std::vector<Hit>& hits) {
+std::uint64_t item_buffer_hits(const Scene& scene, const ItemBuffer& ib, const SmallObjects& small,
+                               const Tile& t, const TileRays& rays, std::vector<Hit>& hits) {
     std::uint64_t fell = 0;
     std::size_t i = 0;
     for (int y = t.y0; y < t.y1; ++y) {
         for (int x = t.x0; x < t.x1; x += kPacketWidth) {
             const int n = std::min(kPacketWidth, t.x1 - x);
-            fell += static_cast<std::uint64_t>(
-                item_buffer_run(scene, ib, x, y, n, rays.lanes(x, y, n), &rays.rays[i], &hits[i]));
+            fell += static_cast<std::uint64_t>(item_buffer_run(
+                scene, ib, small, x, y, n, rays.lanes(x, y, n), &rays.rays[i], &hits[i]));
             i += static_cast<std::size_t>(n);
         }
     }
@@ -184,6 +205,7 @@ struct Pass {
     const Tracer& tracer;
     int spp;
     const ItemBuffer* item_buffer;
+    const SmallObjects& small;  // with the item buffer: what it cannot speak for
     Image& image;
     std::atomic<std::uint64_t>& nonfinite;
     std::atomic<std::uint64_t>& fallbacks;
@@ -253,7 +275,7 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
             Stopwatch lap;
             rays.make(p.camera, t, s, p.spp);
             if (p.item_buffer)
-                fell += item_buffer_hits(p.scene, *p.item_buffer, t, rays, hits);
+                fell += item_buffer_hits(p.scene, *p.item_buffer, p.small, t, rays, hits);
             else
                 primary_packets(p.scene, rays.rays, hits);
             local.primary += n;
@@ -296,8 +318,9 @@ Image render(const Scene& scene, const Camera& camera, const RenderOptions& opti
     const int tiles = tile_count(width, height, tile_size);
     TileRunner runner(width, height, tile_size, threads, progress, tiles);
     const Tracer tracer(scene, options.trace);
-    const Pass pass{scene, camera, tracer, spp, item_buffer, image, nonfinite, fallbacks};
     const Stopwatch watch;
+    const SmallObjects small = item_buffer ? SmallObjects(scene, camera) : SmallObjects();
+    const Pass pass{scene, camera, tracer, spp, item_buffer, small, image, nonfinite, fallbacks};
     RenderStats times;
     const bool complete = render_by_tile(pass, runner, stop, counts, times);
     if (stats) {

@@ -610,6 +610,18 @@ mutant oracle-transform-normal core/transform.cpp \
     't.normal = glm::transpose(glm::inverse(linear));' 't.normal = glm::inverse(linear);' \
     rtrender "${oracle[@]}"
 
+# Objects too small on the screen for the item buffer (core/small_objects.h): their
+# pixels are taken from the ids' trust and tested against them.
+mutant small-objects-pixels-still-trusted core/renderer.cpp \
+    'const unsigned edge = all & ~(settled & ~under_tiny);' 'const unsigned edge = all & ~settled;' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant small-objects-not-tested core/renderer.cpp \
+    'scene.intersect_among(tiny.data(), tiny_count, rays, lanes, hits, edge);' '' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant small-objects-none-small-enough core/small_objects.h \
+    'static constexpr float kPixels = 4.0f;' 'static constexpr float kPixels = 1.0f;' \
+    rt_tests $(unit 'ItemBuffer.*')
+
 # A build's large arrays (core/large_array.cpp): on huge-page boundaries, kept when freed,
 # within a bound, and only for an array of about their size.
 mutant large-array-not-aligned core/large_array.cpp \
