@@ -52,9 +52,10 @@ struct ItemBuffer {
     // "sixteenth session"), so an object in front whose true outline
     // reached this pixel's centre would have its raster outline within a quarter pixel of
     // it, and an outline that covers a diagonal neighbour's centre but no side neighbour's
-    // cannot come that close, unless the object is under a pixel across (which the block
-    // of nine misses as well: it may cover no pixel centre at all). many_spheres: 27 % fewer
-    // pixels on edges, the same pixels unlike a trace without the item buffer.
+    // cannot come that close, unless the object is under a pixel or two across (which the
+    // block of nine misses as well: it may cover no pixel centre at all; the renderer tests
+    // such objects itself, core/small_objects.h). many_spheres: 27 % fewer pixels on edges,
+    // the same pixels unlike a trace without the item buffer.
     bool interior(int x, int y) const {
         const std::uint32_t id = object[index(x, y)];
         if (x > 0 && y > 0 && x + 1 < width && y + 1 < height) {
