@@ -1,9 +1,13 @@
 #pragma once
-// The objects too small on the screen for the item buffer to speak for them: under a
-// few pixels across, the raster (a sphere's tessellation, a triangle's sample points) may
-// cover none of the pixel centres the true shape covers, and then no pixel around names
-// the object either (ItemBuffer::interior). The renderer tests these objects itself at
-// the pixels of their screen boxes (core/renderer.cpp, item_buffer_run).
+// The objects too small on the screen for the item buffer to speak for them. The raster's
+// outlines lie within a quarter pixel of the true ones (ItemBuffer::interior), but an
+// object a few pixels across may show only a pixel or two (under a pixel across, or a
+// crescent a pixel wide where a nearer object hides the rest: many_spheres at 333 x 211),
+// and the raster may then cover none of their centres, so that no pixel around names the
+// object either. The renderer tests these objects itself at the pixels of their screen
+// boxes (core/renderer.cpp, item_buffer_run). Under four pixels across left many_spheres'
+// crescents out (7 of 70,263 pixels unlike a trace without the item buffer); under six,
+// none (docs/BENCHMARKS.md, seventeenth session).
 
 #include <cstdint>
 #include <span>
@@ -23,7 +27,7 @@ class SmallObjects {
     };
     // Objects whose box, seen by `camera`, is under kPixels across both ways (and wholly in
     // front of the eye), each with its box's pixels and a pixel more all round.
-    static constexpr float kPixels = 4.0f;
+    static constexpr float kPixels = 6.0f;
 
     SmallObjects() = default;
     SmallObjects(const Scene& scene, const Camera& camera);

@@ -619,7 +619,7 @@ mutant small-objects-not-tested core/renderer.cpp \
     'scene.intersect_among(tiny.data(), tiny_count, rays, lanes, hits, edge);' '' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant small-objects-none-small-enough core/small_objects.h \
-    'static constexpr float kPixels = 4.0f;' 'static constexpr float kPixels = 1.0f;' \
+    'static constexpr float kPixels = 6.0f;' 'static constexpr float kPixels = 1.0f;' \
     rt_tests $(unit 'ItemBuffer.*')
 
 # A build's large arrays (core/large_array.cpp): on huge-page boundaries, kept when freed,
