@@ -126,6 +126,14 @@ void Window::deliver_queued() {
     queued_.erase(queued_.begin(), queued_.begin() + static_cast<std::ptrdiff_t>(n));
 }
 
+bool Window::press_unseen() const {
+    const auto press = [](const InputEvent& e) {
+        return e.kind == InputEvent::kButton && e.action == GLFW_PRESS;
+    };
+    return std::any_of(changed_.begin(), changed_.end(), press) ||
+           std::any_of(queued_.begin(), queued_.end(), press);
+}
+
 void Window::forward_char(unsigned int c) {
     queued_.push_back({InputEvent::kChar, static_cast<int>(c)});
     deliver_queued();

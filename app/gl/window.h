@@ -43,6 +43,9 @@ class Window {
     void forward_char(unsigned int c);  // queued with the keys, so typing keeps its order
     static void forward_scroll(GLFWwindow* window, double dx, double dy);
     bool input_pending() const { return !queued_.empty(); }  // for ImGui's next frames
+    // A mouse button pressed that no ImGui frame has seen yet: until one has, what the
+    // press does (a text field it opens for editing, say) is not known.
+    bool press_unseen() const;
     void begin_imgui_frame();
     void end_imgui_frame();  // renders ImGui's draw data
     void swap_buffers();

@@ -382,6 +382,7 @@ void Viewer::frame(float dt) {
     draw_overlays(fb.x, fb.y);  // labels (L), light markers, messages
     if (display_.help) draw_help();
     window_.end_imgui_frame();
+    release_held_keys();  // the frame has seen the clicks before them
     rt::gl::check("Viewer::frame");
     window_.swap_buffers();
     stats_.frame_ms.add(static_cast<float>(watch.milliseconds()));
@@ -393,7 +394,7 @@ void Viewer::frame(float dt) {
 // with time (the progress bar, the flicker, messages, the schedule's rest). It polls
 // while the camera flies or ImGui still has input queued.
 void Viewer::wait_for_events() {
-    if (fly_direction() != rt::vec3(0.0f) || window_.input_pending())
+    if (fly_direction() != rt::vec3(0.0f) || window_.input_pending() || !held_keys_.empty())
         glfwPollEvents();
     else
         glfwWaitEventsTimeout(kIdleWait);

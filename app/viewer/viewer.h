@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -142,6 +143,17 @@ class Viewer {
     static constexpr double kQuitSeconds = 2.0;     // the second Esc within this quits
     static constexpr double kMessageSeconds = 6.0;  // how long "saved: ..." stays
     static constexpr double kIdleWait = 0.1;        // the longest wait for events
+    // Keys and text that came after a click no ImGui frame has seen: they wait for that
+    // frame, and go to the viewer or to a text field as its end leaves the editing.
+    struct HeldKey {
+        bool text = false;
+        int key = 0, scancode = 0, action = 0, mods = 0;
+        unsigned int c = 0;
+    };
+    void route_key(int key, int scancode, int action, int mods);
+    void route_char(unsigned int c);
+    void release_held_keys();
+    std::vector<HeldKey> held_keys_;
     void on_escape();
     void quit(const char* how);
     bool load(const std::string& path);  // on failure: false, error_ set, current scene kept

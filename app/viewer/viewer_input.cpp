@@ -42,12 +42,42 @@ rt::vec3 Viewer::fly_direction() const {
             down(GLFW_KEY_W) - down(GLFW_KEY_S)};
 }
 
+// A key or a character that comes while a click has not yet reached ImGui's frame (the
+// click and the typing after it in one slow frame) waits for that frame: whether it is
+// text for the field the click opened or the viewer's own key is known only then.
+void Viewer::on_key(int key, int scancode, int action, int mods) {
+    if (window_.press_unseen() || !held_keys_.empty())
+        held_keys_.push_back({.key = key, .scancode = scancode, .action = action, .mods = mods});
+    else
+        route_key(key, scancode, action, mods);
+}
+
+void Viewer::on_char(unsigned int c) {
+    if (window_.press_unseen() || !held_keys_.empty())
+        held_keys_.push_back({.text = true, .c = c});
+    else
+        route_char(c);
+}
+
+// After each ImGui frame, in order, until one waits for a later click.
+void Viewer::release_held_keys() {
+    std::size_t n = 0;
+    for (; n < held_keys_.size() && !window_.press_unseen(); ++n) {
+        const HeldKey k = held_keys_[n];
+        if (k.text)
+            route_char(k.c);
+        else
+            route_key(k.key, k.scancode, k.action, k.mods);
+    }
+    held_keys_.erase(held_keys_.begin(), held_keys_.begin() + static_cast<std::ptrdiff_t>(n));
+}
+
 // Keys are the viewer's, except while a text field is being edited (a click in one, or
 // Ctrl+click on a slider): then every key is ImGui's. ImGui always learns the modifiers
 // (Ctrl+click needs them) and every release, so no key stays down in it; Tab and the
 // others never reach its focus and tabbing, which used to turn a slider into a text
 // field that the next digit typed into.
-void Viewer::on_key(int key, int scancode, int action, int mods) {
+void Viewer::route_key(int key, int scancode, int action, int mods) {
     const bool editing = editing_text();
     if (editing || is_modifier(key) || action == GLFW_RELEASE)
         window_.forward_key(key, scancode, action, mods);
@@ -182,7 +212,7 @@ void Viewer::on_scroll(double dy) {
 void Viewer::on_drop(const std::string& path) { scenes_.pick(path); }
 
 // Characters are text only while a text field is being edited.
-void Viewer::on_char(unsigned int c) {
+void Viewer::route_char(unsigned int c) {
     if (editing_text()) window_.forward_char(c);
 }
 

@@ -83,6 +83,14 @@ drag() {  # drag BUTTON X0 Y0 X1 Y1 (window coordinates)
     xdotool mouseup "$1"
 }
 click() { xdotool mousemove --window "$wid" "$1" "$2" click 1; }
+# in_one_slow_frame COMMAND...: the input COMMAND sends reaches the viewer all at once, as
+# when a frame is slow: the viewer is stopped while it is sent.
+in_one_slow_frame() {
+    kill -STOP "$app_pid"
+    "$@"
+    sleep 0.2  # the X server has passed it on
+    kill -CONT "$app_pid"
+}
 grab() { import -window "$wid" "$work/$1.png"; }
 
 # differing PIXELS A B [GEOMETRY]: how many pixels differ by more than 3% (in a crop)
