@@ -171,7 +171,7 @@ unsigned plane_packet(const Plane& p, std::uint32_t object, const Ray* rays, Hit
                       unsigned lanes) {
     using Float = Lanes<kPacketWidth>::Float;
     const int first = __builtin_ctz(lanes);
-    Float d_dot_n, o_dot_n, t_max;  // glm::dot's order: (x + y) + z
+    Float d_dot_n{}, o_dot_n{}, t_max{};  // glm::dot's order: (x + y) + z (set at a == 0)
     for (int a = 0; a < 3; ++a) {
         Float o, d;
         for (int lane = 0; lane < kPacketWidth; ++lane) {

@@ -37,7 +37,7 @@ unset LSAN_OPTIONS UBSAN_OPTIONS
 echo "== ThreadSanitizer"
 cmake -S . -B build-tsan -G Ninja "${debug[@]}" -DCMAKE_CXX_FLAGS="-fsanitize=thread" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" >/dev/null
-cmake --build build-tsan --target rt_tests rt_viewer_tests
-TSAN_OPTIONS="halt_on_error=1" build-tsan/tests/rt_tests --gtest_filter="Render.*:*AccelTest.*:Bvh.*:*WideBvhTest*" || status=1
+cmake --build build-tsan --target rt_threaded_tests rt_viewer_tests
+TSAN_OPTIONS="halt_on_error=1" build-tsan/tests/rt_threaded_tests --gtest_filter="Render.*:*AccelTest.*:Bvh.*:*WideBvhTest*" || status=1
 TSAN_OPTIONS="halt_on_error=1" build-tsan/tests/rt_viewer_tests --gtest_filter='TraceJob.*' || status=1
 exit $status
