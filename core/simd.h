@@ -96,4 +96,24 @@ inline unsigned bits(Mask8 m) {
 }
 #endif
 
+// The smallest and the largest lane, in log2(lanes) steps (no lane may be NaN).
+inline float hmin(Float4 v) {
+    v = vmin(v, __builtin_shufflevector(v, v, 2, 3, 0, 1));
+    return vmin(v, __builtin_shufflevector(v, v, 1, 0, 3, 2))[0];
+}
+inline float hmax(Float4 v) {
+    v = vmax(v, __builtin_shufflevector(v, v, 2, 3, 0, 1));
+    return vmax(v, __builtin_shufflevector(v, v, 1, 0, 3, 2))[0];
+}
+#if defined(__AVX__)
+inline float hmin(Float8 v) {
+    return hmin(vmin(__builtin_shufflevector(v, v, 0, 1, 2, 3),
+                     __builtin_shufflevector(v, v, 4, 5, 6, 7)));
+}
+inline float hmax(Float8 v) {
+    return hmax(vmax(__builtin_shufflevector(v, v, 0, 1, 2, 3),
+                     __builtin_shufflevector(v, v, 4, 5, 6, 7)));
+}
+#endif
+
 }  // namespace rt

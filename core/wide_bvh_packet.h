@@ -43,40 +43,32 @@ struct PacketBoxes {
     bool set(const Ray* rays, unsigned active) {
         constexpr unsigned kAll = (1u << N) - 1u;
         const int first = __builtin_ctz(active);
-        const auto lowest = [](const Float& v) {
-            float m = v[0];
-            for (int lane = 1; lane < N; ++lane) m = std::min(m, v[lane]);
-            return m;
-        };
-        const auto highest = [](const Float& v) {
-            float m = v[0];
-            for (int lane = 1; lane < N; ++lane) m = std::max(m, v[lane]);
-            return m;
-        };
+        Float d[3];
+        for (int lane = 0; lane < N; ++lane) {  // each ray read once, its six floats together
+            const Ray& r = rays[(active >> lane) & 1u ? lane : first];
+            d[0][lane] = r.dir.x, d[1][lane] = r.dir.y, d[2][lane] = r.dir.z;
+            origin[0][lane] = r.origin.x, origin[1][lane] = r.origin.y;
+            origin[2][lane] = r.origin.z;
+        }
         one_origin = true;
         for (int a = 0; a < 3; ++a) {
-            Float d;
-            for (int lane = 0; lane < N; ++lane) {
-                const Ray& r = rays[(active >> lane) & 1u ? lane : first];
-                d[lane] = r.dir[a];
-                origin[a][lane] = r.origin[a];
-            }
-            inv[a] = 1.0f / d;  // lane by lane the single ray's 1.0f / dir (IEEE division)
+            inv[a] = 1.0f / d[a];  // lane by lane the single ray's 1.0f / dir (IEEE division)
             inv_far[a] = inv[a] * kSlabExitFactor;
-            const unsigned up = bits(d > 0.0f), down = bits(d < 0.0f);
+            const unsigned up = bits(d[a] > 0.0f), down = bits(d[a] < 0.0f);
             if ((up != kAll && down != kAll) ||
                 bits(vabs(inv[a]) < splat<Float>(kInfinity)) != kAll)
                 return false;
-            const float o_lo = lowest(origin[a]), o_hi = highest(origin[a]);
+            const float o_lo = hmin(origin[a]), o_hi = hmax(origin[a]);
             one_origin = one_origin && o_lo == o_hi;
             const bool positive = up == kAll;
             entry_origin[a] = splat<Float>(positive ? o_hi : o_lo);
             exit_origin[a] = splat<Float>(positive ? o_lo : o_hi);
-            inv_lo[a] = splat<Float>(lowest(inv[a]));
-            inv_hi[a] = splat<Float>(highest(inv[a]));
+            const float i_lo = hmin(inv[a]), i_hi = hmax(inv[a]);
+            inv_lo[a] = splat<Float>(i_lo);
+            inv_hi[a] = splat<Float>(i_hi);
             // Multiplying by the factor keeps the order, so these bound every ray's inv_far.
-            exit_inv_lo[a] = splat<Float>(lowest(inv[a]) * kSlabExitFactor);
-            exit_inv_hi[a] = splat<Float>(highest(inv[a]) * kSlabExitFactor);
+            exit_inv_lo[a] = splat<Float>(i_lo * kSlabExitFactor);
+            exit_inv_hi[a] = splat<Float>(i_hi * kSlabExitFactor);
             near[a] = positive ? a : a + 3;
             far[a] = positive ? a + 3 : a;
         }
@@ -127,11 +119,9 @@ struct PacketLimits {
     float largest = -kInfinity;
 
     void update(const float* t_max, unsigned active) {
-        largest = -kInfinity;
-        for (int lane = 0; lane < N; ++lane) {
+        for (int lane = 0; lane < N; ++lane)  // (the inactive lanes' t_max may be unset)
             lanes[lane] = (active >> lane) & 1u ? t_max[lane] : -kInfinity;
-            largest = std::max(largest, lanes[lane]);
-        }
+        largest = hmax(lanes);
     }
 };
 
