@@ -401,12 +401,12 @@ mutant box-exit-without-ize-factor core/wide_bvh.h \
     'inv_far[a] = splat<Float>(inv_a * kSlabExitFactor);' 'inv_far[a] = splat<Float>(inv_a);' \
     rt_tests $(unit 'Watertight.*')
 mutant packet-exit-without-ize-factor core/wide_bvh_packet.h \
-    'exit_inv_hi[a] = splat<Float>(highest(inv[a]) * kSlabExitFactor);' \
-    'exit_inv_hi[a] = splat<Float>(highest(inv[a]));' \
+    'exit_inv_hi[a] = splat<Float>(i_hi * kSlabExitFactor);' \
+    'exit_inv_hi[a] = splat<Float>(i_hi);' \
     rt_tests $(unit 'Watertight.*')
 mutant packet-exit-lo-without-ize-factor core/wide_bvh_packet.h \
-    'exit_inv_lo[a] = splat<Float>(lowest(inv[a]) * kSlabExitFactor);' \
-    'exit_inv_lo[a] = splat<Float>(lowest(inv[a]));' \
+    'exit_inv_lo[a] = splat<Float>(i_lo * kSlabExitFactor);' \
+    'exit_inv_lo[a] = splat<Float>(i_lo);' \
     rt_tests $(unit 'Watertight.*')
 mutant packet-ray-exit-without-ize-factor core/wide_bvh_packet.h \
     'inv_far[a] = inv[a] * kSlabExitFactor;' 'inv_far[a] = inv[a];' \
@@ -414,6 +414,15 @@ mutant packet-ray-exit-without-ize-factor core/wide_bvh_packet.h \
 mutant packet-triangles-error-bound-unscaled core/triangle_packet.h \
     't_det_error(o, r.abs_sz)' 't_det_error(o, splat<Float>(1.0f))' \
     rt_tests $(unit 'TrianglePacket.*')
+mutant packet-interval-of-the-first-ray core/wide_bvh_packet.h \
+    'const Ray& r = rays[(active >> lane) & 1u ? lane : first];' 'const Ray& r = rays[first];' \
+    rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant packet-limit-from-lane-zero core/wide_bvh_packet.h \
+    'largest = hmax(lanes);' 'largest = lanes[0];' \
+    rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant lanes-smallest-one-step core/simd.h \
+    'return vmin(v, __builtin_shufflevector(v, v, 1, 0, 3, 2))[0];' 'return v[0];' \
+    rt_tests $(unit 'Simd.*:EveryKind/PacketTest.*')
 mutant packet-skips-a-child core/wide_bvh_packet.h \
     'for (mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
     'for (mask &= mask - 1, mask &= mask - 1; mask != 0; mask &= mask - 1) {' \

@@ -81,6 +81,19 @@ Packet make_packet(std::mt19937& rng, int kind) {
 
 class PacketTest : public ::testing::TestWithParam<AccelKind> {};
 
+// The lane reductions a packet's interval is made of: whichever lane holds the extreme.
+TEST(Simd, TheSmallestAndLargestLaneAreFoundInAnyLane) {
+    using Float = Lanes<kPacketWidth>::Float;
+    for (int at = 0; at < kPacketWidth; ++at) {
+        Float v;
+        for (int lane = 0; lane < kPacketWidth; ++lane) v[lane] = 1.0f + 0.25f * static_cast<float>(lane);
+        v[at] = -3.5f;
+        EXPECT_EQ(hmin(v), -3.5f) << "lane " << at;
+        v[at] = 7.25f;
+        EXPECT_EQ(hmax(v), 7.25f) << "lane " << at;
+    }
+}
+
 TEST_P(PacketTest, EveryRayGetsTheHitItGetsAlone) {
     std::mt19937 rng(3);
     int hits = 0, packed = 0;
