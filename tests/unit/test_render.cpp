@@ -7,6 +7,7 @@
 #include "core/compare.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
+#include "core/tile_rays.h"
 #include "test_util.h"
 
 namespace rt {
@@ -46,6 +47,30 @@ TEST(Render, EveryPixelIsItsCentresRayTracedAlone) {
         }
     }
     EXPECT_EQ(differing, 0);
+}
+
+// A tile's rays, made four at a time as blocks of floats (TileRays::write_row), are the
+// camera's rays through the pixel centres bit for bit, on tiles of every width from 1 to
+// 19 (whole blocks and every remainder), anywhere in the image, with an eye whose
+// coordinates include -0 (kept by the block's -0 additions) and 0 in a direction's term.
+TEST(Render, ATilesRaysAreTheCamerasRaysBitForBit) {
+    Camera camera = Camera::look_at(vec3(-0.0f, 2.5f, -7.25f), vec3(0.0f, 2.5f, 0.0f),
+                                    vec3(0.0f, 1.0f, 0.0f), 40.0f, 97, 31);
+    camera.eye = vec3(-0.0f, 2.5f, -7.25f);
+    for (int width = 1; width <= 19; ++width) {
+        for (const int x0 : {0, 5, 97 - width}) {
+            const detail::Tile t{x0, 3, x0 + width, 9};
+            detail::TileRays rays(t);
+            rays.make(camera, t, 0, 1);
+            std::size_t i = 0;
+            for (int y = t.y0; y < t.y1; ++y)
+                for (int x = t.x0; x < t.x1; ++x, ++i) {
+                    const Ray expected = camera.ray(x, y);
+                    ASSERT_EQ(0, std::memcmp(&expected, &rays.rays[i], sizeof(Ray)))
+                        << "width " << width << ", pixel " << x << "," << y;
+                }
+        }
+    }
 }
 
 // A built Scene is read-only in its type: no member can be assigned, and it is never
