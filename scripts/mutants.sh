@@ -394,6 +394,18 @@ mutant shared-ids-written-by-lines app/gl/raster_renderer.cpp \
 mutant tile-rays-off-centre core/tile_rays.h \
     'camera.across(static_cast<float>(x) + 0.5f)' 'camera.across(static_cast<float>(x) + 0.49f)' \
     rt_tests $(unit 'Render.EveryPixelIsItsCentresRayTracedAlone')
+mutant tile-rays-origin-plus-zero core/tile_rays.h \
+    'const Chunk v{row.x, row.y, row.z, -0.0f, -0.0f, -0.0f, -0.0f, -0.0f};' \
+    'const Chunk v{row.x, row.y, row.z, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};' \
+    rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
+mutant tile-rays-block-shuffled core/tile_rays.h \
+    '__builtin_shufflevector(v, v, 3, 0, 1, 2, 3, 3, 3, 0),' \
+    '__builtin_shufflevector(v, v, 3, 0, 2, 1, 3, 3, 3, 0),' \
+    rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
+mutant tile-rays-remainder-left-out core/tile_rays.h \
+    'for (std::size_t k = 4 * whole; k < columns_.size(); ++k)' \
+    'for (std::size_t k = 4 * whole + 1; k < columns_.size(); ++k)' \
+    rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
 mutant packet-interval-takes-one-inverse core/wide_bvh_packet.h \
     'return d * (d >= zero ? inv_lo[a] : inv_hi[a]);' 'return d * inv_hi[a];' \
     rt_tests $(unit 'EveryKind/PacketTest.*')
