@@ -11,9 +11,17 @@ namespace rt {
 
 namespace {
 
-// A leaf this many rays of a packet enter tests its triangles across the rays
-// (core/triangle_packet.h); fewer, each ray tests them alone.
+// A leaf that at least kRaysAcross rays of a packet enter, and at least kRaysPerTriangle
+// rays for each of its triangles, tests its triangles across the rays, a triangle at a time
+// (core/triangle_packet.h); otherwise each ray tests the whole leaf at once (up to eight
+// triangles in one test, intersect(Triangle4, Triangle4, ...)). A triangle across the rays
+// costs about what a ray against the leaf does, so the rays must outnumber the triangles
+// for it to pay, and by two to one in practice: with the rays at least as many as the
+// triangles, packets of shadow feelers took 1.00-1.01x Embree's rtcOccluded8 time on the
+// bunny and 0.92x at two to one (primary packets 0.77-0.78x and 0.68-0.69x; teapot shadows
+// 1.05-1.06x and 1.00x; docs/BENCHMARKS.md, nineteenth session).
 constexpr int kRaysAcross = 3;
+constexpr std::uint32_t kRaysPerTriangle = 2;
 
 // The packet's rays set up for the watertight test, each alone and, where they share
 // their permutation, together.
@@ -39,7 +47,11 @@ struct PacketShear {
         }
         return *this;
     }
-    bool across(unsigned lanes) const { return shared && std::popcount(lanes) >= kRaysAcross; }
+    bool across(unsigned lanes, std::uint32_t triangles) const {
+        const int entering = std::popcount(lanes);
+        return shared && entering >= kRaysAcross &&
+               static_cast<std::uint32_t>(entering) >= kRaysPerTriangle * triangles;
+    }
 };
 
 }  // namespace
@@ -64,7 +76,7 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
                 out.b2 = b2;
                 hit |= 1u << ray;
             };
-            if (shear.across(lanes)) {
+            if (shear.across(lanes, count)) {
                 std::array<int, kPacketWidth> lane;
                 std::array<float, kPacketWidth> b1, b2;
                 for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
@@ -107,7 +119,7 @@ unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsi
             unsigned hit = 0;
             const std::uint32_t start = first_pack(leaf);
             const PacketShear& shear = lazy_shear.get();
-            if (shear.across(lanes)) {
+            if (shear.across(lanes, count)) {
                 for (std::uint32_t k = 0; kTriangle4Lanes * k < count && lanes != 0; ++k) {
                     const unsigned h =
                         rt::intersect<true>(packs_[start + k], shear.together, lanes, limits.data(),

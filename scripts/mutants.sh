@@ -423,6 +423,13 @@ mutant packet-exit-lo-without-ize-factor core/wide_bvh_packet.h \
 mutant packet-ray-exit-without-ize-factor core/wide_bvh_packet.h \
     'inv_far[a] = inv[a] * kSlabExitFactor;' 'inv_far[a] = inv[a];' \
     rt_tests $(unit 'Watertight.*')
+mutant packet-leaf-across-drops-a-feeler core/mesh_packet.cpp \
+    'hit |= h;' 'hit |= h & (h - 1);' \
+    rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant packet-leaf-across-swaps-barycentrics core/mesh_packet.cpp \
+    'record(ray, start + k, lane[ray], b1[ray], b2[ray]);' \
+    'record(ray, start + k, lane[ray], b2[ray], b1[ray]);' \
+    rt_tests $(unit 'EveryKind/PacketTest.*')
 mutant packet-triangles-error-bound-unscaled core/triangle_packet.h \
     't_det_error(o, r.abs_sz)' 't_det_error(o, splat<Float>(1.0f))' \
     rt_tests $(unit 'TrianglePacket.*')
