@@ -70,7 +70,7 @@ struct LargeArrayAllocator : std::allocator<T> {
     }
 
   private:
-    static bool large(std::size_t n) {
+    static bool large([[maybe_unused]] std::size_t n) {
 #if defined(__SANITIZE_ADDRESS__)
         return false;  // the sanitizer checks what the heap hands out, not mapped pages
 #else
