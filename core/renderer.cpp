@@ -114,8 +114,9 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
 // meets is named next to it (the planes too: the raster draws them to within a fraction
 // of a pixel of their horizon, GpuScene::plane_extent). Returns how many pixels were on
 // an edge or missed.
-int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects& small, int x,
-                    int y, int n, const RayLanes<kPacketWidth>& lanes, const Ray* rays, Hit* hits) {
+int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects& small,
+                    const TileRays& rays, int x, int y, int n, Hit* hits) {
+    const RayLanes<kPacketWidth> lanes = rays.lanes(x, y, n);
     const unsigned all = (1u << n) - 1u;
     reset_hits(hits, static_cast<std::size_t>(n));
     const std::size_t at = ib.index(x, y);
@@ -149,15 +150,17 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects
     const unsigned edge = all & ~(settled & ~under_tiny);
     if (edge == 0) return 0;
     for (unsigned k = edge; k != 0; k &= k - 1) hits[__builtin_ctz(k)] = Hit{};
+    std::array<Ray, kPacketWidth> run;  // the Rays only here, where whole-scene tests read them
+    rays.span(rays.index(x, y), static_cast<std::size_t>(n), run.data());
     if (crowd) {
-        scene.intersect_packet(rays, hits, edge);
+        scene.intersect_packet(run.data(), hits, edge);
         return std::popcount(edge);
     }
     std::array<std::uint32_t, 3 * (kPacketWidth + 2)> around;
     const int count =
         objects_around(ib, x + __builtin_ctz(edge), x + 31 - __builtin_clz(edge), y, around.data());
-    scene.intersect_among(around.data(), count, rays, lanes, hits, edge);
-    scene.intersect_among(tiny.data(), tiny_count, rays, lanes, hits, edge);
+    scene.intersect_among(around.data(), count, run.data(), lanes, hits, edge);
+    scene.intersect_among(tiny.data(), tiny_count, run.data(), lanes, hits, edge);
     return std::popcount(edge);
 }
 
@@ -170,8 +173,8 @@ std::uint64_t item_buffer_hits(const Scene& scene, const ItemBuffer& ib, const S
     for (int y = t.y0; y < t.y1; ++y) {
         for (int x = t.x0; x < t.x1; x += kPacketWidth) {
             const int n = std::min(kPacketWidth, t.x1 - x);
-            fell += static_cast<std::uint64_t>(item_buffer_run(
-                scene, ib, small, x, y, n, rays.lanes(x, y, n), &rays.rays[i], &hits[i]));
+            fell += static_cast<std::uint64_t>(
+                item_buffer_run(scene, ib, small, rays, x, y, n, &hits[i]));
             i += static_cast<std::size_t>(n);
         }
     }
@@ -180,12 +183,17 @@ std::uint64_t item_buffer_hits(const Scene& scene, const ItemBuffer& ib, const S
 
 // The first hits of a tile's rays, kPacketWidth neighbours at a time (a row's run of
 // pixels, rows running on where the tile is narrower): the hits Scene::intersect gives,
-// the boxes tested once for a packet (core/wide_bvh_packet.h).
-void primary_packets(const Scene& scene, const std::vector<Ray>& rays, std::vector<Hit>& hits) {
-    for (std::size_t i = 0; i < rays.size(); i += kPacketWidth) {
-        const std::size_t n = std::min<std::size_t>(kPacketWidth, rays.size() - i);
+// the boxes tested once for a packet (core/wide_bvh_packet.h). The tile's Rays are made
+// first, all together, into `tile` (made packet by packet, next to the traversal that
+// reads them, the step took 2-4 % longer: tutorial, many_spheres).
+void primary_packets(const Scene& scene, const TileRays& rays, std::vector<Ray>& tile,
+                     std::vector<Hit>& hits) {
+    tile.resize(hits.size());
+    rays.span(0, hits.size(), tile.data());
+    for (std::size_t i = 0; i < hits.size(); i += kPacketWidth) {
+        const std::size_t n = std::min<std::size_t>(kPacketWidth, hits.size() - i);
         reset_hits(&hits[i], n);
-        scene.intersect_packet(&rays[i], &hits[i], (1u << n) - 1u);
+        scene.intersect_packet(&tile[i], &hits[i], (1u << n) - 1u);
     }
 }
 
@@ -219,15 +227,23 @@ struct Pass {
 };
 
 // The colours of a tile's first hits, added to its pixels: the hits found go to the
-// tracer kPacketWidth at a time, their local terms computed across SIMD lanes.
-void shade_tile(const Pass& p, const Tracer& tracer, const Tile& t, const std::vector<Ray>& rays,
+// tracer kPacketWidth at a time, with their rays, their local terms computed across SIMD
+// lanes.
+void shade_tile(const Pass& p, const Tracer& tracer, const Tile& t, const TileRays& rays,
                 const std::vector<Hit>& hits, RayCounts& counts) {
-    std::array<std::uint32_t, kPacketWidth> found;
+    static constexpr auto kEach = [] {
+        std::array<std::uint32_t, kPacketWidth> each{};
+        for (std::uint32_t k = 0; k < kPacketWidth; ++k) each[k] = k;
+        return each;
+    }();
+    std::array<Ray, kPacketWidth> found_rays;
+    std::array<Hit, kPacketWidth> found_hits;
     std::array<vec3*, kPacketWidth> pixels;
     std::array<vec3, kPacketWidth> colours;
     int n = 0;
     const auto shade = [&] {
-        tracer.shade_found(rays.data(), hits.data(), found.data(), n, counts, colours.data());
+        tracer.shade_found(found_rays.data(), found_hits.data(), kEach.data(), n, counts,
+                           colours.data());
         for (int k = 0; k < n; ++k) *pixels[k] += p.finite(colours[k]);
         n = 0;
     };
@@ -239,7 +255,8 @@ void shade_tile(const Pass& p, const Tracer& tracer, const Tile& t, const std::v
                 pixel += p.finite(p.scene.background);
                 continue;
             }
-            found[n] = i;
+            found_rays[n] = rays.ray(x, y);
+            found_hits[n] = hits[i];
             pixels[n++] = &pixel;
             if (n == kPacketWidth) shade();
         }
@@ -269,6 +286,7 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
         const std::size_t n = static_cast<std::size_t>(w) * (t.y1 - t.y0);
         TileRays rays(t);
         std::vector<Hit> hits(n);
+        std::vector<Ray> tile_rays(p.item_buffer ? 0 : n);  // without the item buffer
         double primary = 0.0, shade = 0.0;
         std::uint64_t fell = 0;
         for (int s = 0; s < p.spp; ++s) {
@@ -277,10 +295,10 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
             if (p.item_buffer)
                 fell += item_buffer_hits(p.scene, *p.item_buffer, p.small, t, rays, hits);
             else
-                primary_packets(p.scene, rays.rays, hits);
+                primary_packets(p.scene, rays, tile_rays, hits);
             local.primary += n;
             primary += lap.lap();
-            shade_tile(p, mine, t, rays.rays, hits, local);
+            shade_tile(p, mine, t, rays, hits, local);
             shade += lap.lap();
         }
         p.fallbacks.fetch_add(fell, std::memory_order_relaxed);

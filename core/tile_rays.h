@@ -15,20 +15,20 @@
 
 namespace rt::detail {
 
-// A tile's camera rays for sample s, row by row: one Ray per pixel (the shading reads
-// them), and for one sample per pixel (the pixel centres) each column's and each row's
-// term of the direction, computed once (Camera::across, Camera::upward): the same rays as
-// Camera::ray without two divisions a pixel, and a row's run of pixels as lanes
-// (RayLanes) from the terms, not read back from its Rays one by one.
+// A tile's camera rays for sample s, row by row. Through the pixel centres (one sample a
+// pixel) a ray is two terms added, one per column and one per row of the direction
+// (Camera::across, Camera::upward), each computed once: the same rays as Camera::ray
+// without two divisions a pixel. They are not stored: each step makes the rays it reads
+// where it reads them (a packet's eight, a run's lanes, the found pixels' for shading),
+// so the item buffer's primary step, which tests its pixels through lanes, makes no Ray
+// at all (writing a Ray a pixel was a fifth of that step: whitted, perf). Other samples
+// (jittered, pixel_sample) are made and kept per pixel.
 class TileRays {
   public:
-    std::vector<Ray> rays;
-
     // Its arrays sized for tile t up front: make() then allocates nothing, so the time of
     // the primary step is the rays' own.
     explicit TileRays(const Tile& t)
-        : rays(static_cast<std::size_t>(t.x1 - t.x0) * (t.y1 - t.y0)),
-          columns_(static_cast<std::size_t>(t.x1 - t.x0)),
+        : columns_(static_cast<std::size_t>(t.x1 - t.x0)),
           rows_(static_cast<std::size_t>(t.y1 - t.y0)),
           row_start_(6 * columns_.size()) {
         for (auto& axis : by_axis_) axis.resize(padded(columns_.size()));
@@ -38,12 +38,13 @@ class TileRays {
         t_ = t;
         eye_ = camera.eye;
         const int w = t.x1 - t.x0;
-        rays.resize(static_cast<std::size_t>(w) * (t.y1 - t.y0));
         centres_ = spp <= 1;
-        std::size_t i = 0;
         if (!centres_) {
+            samples_.resize(static_cast<std::size_t>(w) * (t.y1 - t.y0));
+            std::size_t i = 0;
             for (int y = t.y0; y < t.y1; ++y)
-                for (int x = t.x0; x < t.x1; ++x) rays[i++] = pixel_sample(camera, x, y, s, spp);
+                for (int x = t.x0; x < t.x1; ++x)
+                    samples_[i++] = pixel_sample(camera, x, y, s, spp);
             return;
         }
         columns_.resize(static_cast<std::size_t>(w));
@@ -56,22 +57,49 @@ class TileRays {
                 by_axis_[a][k] = columns_[std::min(k, columns_.size() - 1)][a];
         }
         rows_.resize(static_cast<std::size_t>(t.y1 - t.y0));
+        for (int y = t.y0; y < t.y1; ++y)
+            rows_[y - t.y0] = camera.upward(static_cast<float>(y) + 0.5f);
         set_row_start(columns_);
-        for (int y = t.y0; y < t.y1; ++y) {
-            const vec3 row = rows_[y - t.y0] = camera.upward(static_cast<float>(y) + 0.5f);
-            write_row(row, &rays[i]);
-            i += columns_.size();
+    }
+
+    // The index of pixel (x, y) in the tile, row by row.
+    std::size_t index(int x, int y) const {
+        return static_cast<std::size_t>(y - t_.y0) * static_cast<std::size_t>(t_.x1 - t_.x0) +
+               static_cast<std::size_t>(x - t_.x0);
+    }
+
+    // The ray of pixel (x, y).
+    Ray ray(int x, int y) const {
+        if (!centres_) return samples_[index(x, y)];
+        return Ray{eye_, columns_[static_cast<std::size_t>(x - t_.x0)] +
+                             rows_[static_cast<std::size_t>(y - t_.y0)]};
+    }
+
+    // The rays of the tile's pixels i .. i + n - 1 (row by row, running on into the next
+    // row where a row ends) into out.
+    void span(std::size_t i, std::size_t n, Ray* out) const {
+        if (!centres_) {
+            std::copy_n(&samples_[i], n, out);
+            return;
+        }
+        const std::size_t w = columns_.size();
+        std::size_t row = i / w, column = i % w;
+        while (n > 0) {
+            const std::size_t m = std::min(n, w - column);
+            write_run(rows_[row], column, m, out);
+            out += m;
+            n -= m;
+            column = 0;
+            ++row;
         }
     }
 
     // The rays of pixels x .. x + n - 1 of row y as lanes (n <= kPacketWidth).
     RayLanes<kPacketWidth> lanes(int x, int y, int n) const {
         using Float = Lanes<kPacketWidth>::Float;
+        if (!centres_)
+            return RayLanes<kPacketWidth>::gather(&samples_[index(x, y)], (1u << n) - 1u);
         const std::size_t column = static_cast<std::size_t>(x - t_.x0);
-        if (!centres_) {
-            const std::size_t i = static_cast<std::size_t>(y - t_.y0) * (t_.x1 - t_.x0) + column;
-            return RayLanes<kPacketWidth>::gather(&rays[i], (1u << n) - 1u);
-        }
         const vec3& row = rows_[static_cast<std::size_t>(y - t_.y0)];
         RayLanes<kPacketWidth> out;
         for (int a = 0; a < 3; ++a) {
@@ -86,9 +114,8 @@ class TileRays {
   private:
     // A row's Rays are {eye, column + row}: the row's floats are the floats of {eye, column}
     // plus {-0, -0, -0, row} over and over (x + -0 is x, for -0 too). Kept as floats, a
-    // row is then whole vectors of additions, kBlock floats (four Rays) at a time, not six
-    // scalar loads, additions and stores a pixel: the item buffer's primary step spent a
-    // quarter of its time making rays so (whitted, perf).
+    // run of a row is then whole vectors of additions, kBlock floats (four Rays) at a time,
+    // not six scalar loads, additions and stores a pixel (a third as many samples, perf).
     static constexpr std::size_t kBlock = 24;  // four Rays of six floats, three AVX vectors
     static_assert(sizeof(Ray) == 6 * sizeof(float), "a Ray is its six floats");
 
@@ -100,7 +127,8 @@ class TileRays {
                 row_start_[6 * k + 3 + a] = columns[k][a];
             }
     }
-    void write_row(const vec3& row, Ray* out) const {
+    // The rays of columns column .. column + n - 1 for a row's term `row`.
+    void write_run(const vec3& row, std::size_t column, std::size_t n, Ray* out) const {
         // Eight floats, read and written where a Ray's floats are.
         using Chunk = float __attribute__((vector_size(32), aligned(4), may_alias));
         constexpr std::size_t kChunks = kBlock / 8;
@@ -110,14 +138,13 @@ class TileRays {
         const Chunk add[kChunks] = {__builtin_shufflevector(v, v, 3, 3, 3, 0, 1, 2, 3, 3),
                                     __builtin_shufflevector(v, v, 3, 0, 1, 2, 3, 3, 3, 0),
                                     __builtin_shufflevector(v, v, 1, 2, 3, 3, 3, 0, 1, 2)};
-        const auto* from = reinterpret_cast<const Chunk*>(row_start_.data());
+        const auto* from = reinterpret_cast<const Chunk*>(&row_start_[6 * column]);
         auto* to = reinterpret_cast<Chunk*>(out);
-        const std::size_t whole = columns_.size() / 4;  // blocks of four Rays
+        const std::size_t whole = n / 4;  // blocks of four Rays
         for (std::size_t b = 0; b < whole; ++b)
             for (std::size_t c = 0; c < kChunks; ++c)
                 to[kChunks * b + c] = from[kChunks * b + c] + add[c];
-        for (std::size_t k = 4 * whole; k < columns_.size(); ++k)
-            out[k] = Ray{eye_, columns_[k] + row};
+        for (std::size_t k = 4 * whole; k < n; ++k) out[k] = Ray{eye_, columns_[column + k] + row};
     }
 
     static std::size_t padded(std::size_t n) {
@@ -127,6 +154,7 @@ class TileRays {
     Tile t_{};
     vec3 eye_{0.0f};
     bool centres_ = true;
+    std::vector<Ray> samples_;  // jittered samples' rays, made per pixel
     std::vector<vec3> columns_, rows_;
     std::vector<float> row_start_;  // {eye, column} of each column, as floats
     std::array<std::vector<float>, 3> by_axis_;

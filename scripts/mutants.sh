@@ -403,9 +403,20 @@ mutant tile-rays-block-shuffled core/tile_rays.h \
     '__builtin_shufflevector(v, v, 3, 0, 2, 1, 3, 3, 3, 0),' \
     rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
 mutant tile-rays-remainder-left-out core/tile_rays.h \
-    'for (std::size_t k = 4 * whole; k < columns_.size(); ++k)' \
-    'for (std::size_t k = 4 * whole + 1; k < columns_.size(); ++k)' \
+    'for (std::size_t k = 4 * whole; k < n; ++k)' \
+    'for (std::size_t k = 4 * whole + 1; k < n; ++k)' \
     rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
+mutant tile-rays-span-starts-at-the-row core/tile_rays.h \
+    'reinterpret_cast<const Chunk*>(&row_start_[6 * column]);' \
+    'reinterpret_cast<const Chunk*>(&row_start_[0]);' \
+    rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
+mutant tile-rays-span-stays-in-its-row core/tile_rays.h \
+    '            column = 0;
+            ++row;' '            column = 0;' \
+    rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
+mutant tile-rays-shading-ray-of-the-next-row core/renderer.cpp \
+    'found_rays[n] = rays.ray(x, y);' 'found_rays[n] = rays.ray(x, std::min(y + 1, t.y1 - 1));' \
+    rt_tests $(unit 'Render.EveryPixelIsItsCentresRayTracedAlone')
 mutant packet-interval-takes-one-inverse core/wide_bvh_packet.h \
     'return d * (d >= zero ? inv_lo[a] : inv_hi[a]);' 'return d * inv_hi[a];' \
     rt_tests $(unit 'EveryKind/PacketTest.*')

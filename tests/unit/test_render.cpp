@@ -49,26 +49,43 @@ TEST(Render, EveryPixelIsItsCentresRayTracedAlone) {
     EXPECT_EQ(differing, 0);
 }
 
-// A tile's rays, made four at a time as blocks of floats (TileRays::write_row), are the
-// camera's rays through the pixel centres bit for bit, on tiles of every width from 1 to
-// 19 (whole blocks and every remainder), anywhere in the image, with an eye whose
-// coordinates include -0 (kept by the block's -0 additions) and 0 in a direction's term.
+// A tile's rays, made four at a time as blocks of floats (TileRays::span) or one by one
+// (TileRays::ray), are the camera's rays through the pixel centres bit for bit, on tiles
+// of every width from 1 to 19 (whole blocks and every remainder), in spans of every
+// length from every start (running on into the next row), anywhere in the image, with an
+// eye whose coordinates include -0 (kept by the block's -0 additions) and 0 in a
+// direction's term. Jittered samples come back as pixel_sample made them.
 TEST(Render, ATilesRaysAreTheCamerasRaysBitForBit) {
     Camera camera = Camera::look_at(vec3(-0.0f, 2.5f, -7.25f), vec3(0.0f, 2.5f, 0.0f),
                                     vec3(0.0f, 1.0f, 0.0f), 40.0f, 97, 31);
     camera.eye = vec3(-0.0f, 2.5f, -7.25f);
+    const auto same = [](const Ray& a, const Ray& b) {
+        return std::memcmp(&a, &b, sizeof(Ray)) == 0;
+    };
     for (int width = 1; width <= 19; ++width) {
         for (const int x0 : {0, 5, 97 - width}) {
             const detail::Tile t{x0, 3, x0 + width, 9};
             detail::TileRays rays(t);
-            rays.make(camera, t, 0, 1);
-            std::size_t i = 0;
-            for (int y = t.y0; y < t.y1; ++y)
-                for (int x = t.x0; x < t.x1; ++x, ++i) {
-                    const Ray expected = camera.ray(x, y);
-                    ASSERT_EQ(0, std::memcmp(&expected, &rays.rays[i], sizeof(Ray)))
-                        << "width " << width << ", pixel " << x << "," << y;
-                }
+            for (const int spp : {1, 4}) {
+                rays.make(camera, t, 2, spp);
+                std::vector<Ray> expected;
+                for (int y = t.y0; y < t.y1; ++y)
+                    for (int x = t.x0; x < t.x1; ++x) {
+                        expected.push_back(pixel_sample(camera, x, y, 2, spp));
+                        ASSERT_TRUE(same(expected.back(), rays.ray(x, y)))
+                            << "width " << width << ", pixel " << x << "," << y << ", spp " << spp;
+                        ASSERT_EQ(rays.index(x, y), expected.size() - 1);
+                    }
+                for (std::size_t n = 1; n <= 13; ++n)
+                    for (std::size_t i = 0; i + n <= expected.size(); ++i) {
+                        std::vector<Ray> span(n);
+                        rays.span(i, n, span.data());
+                        for (std::size_t k = 0; k < n; ++k)
+                            ASSERT_TRUE(same(expected[i + k], span[k]))
+                                << "width " << width << ", span " << i << "+" << n << ", ray " << k
+                                << ", spp " << spp;
+                    }
+            }
         }
     }
 }
