@@ -391,6 +391,17 @@ mutant item-buffer-lanes-unmasked core/mesh.cpp \
 mutant shared-ids-written-by-lines app/gl/raster_renderer.cpp \
     'if (drawing_ids_) {' 'if (false) {' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*TheColourPassDrawsTheSameItemBuffer*'
+mutant edge-run-trusts-any-hit core/renderer.cpp \
+    'if (hits[lane].found() && hits[lane].object + 1 == ib.object[at + lane]) trusted |= k & -k;' \
+    'if (hits[lane].found()) trusted |= k & -k;' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant edge-run-leaves-the-meshes-out core/renderer.cpp \
+    'if (mesh_count == 0) return on_edges;' 'return on_edges;' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant edge-run-tests-only-the-edge core/renderer.cpp \
+    'scene.intersect_among(around.data(), count, run.data(), lanes, hits, open);' \
+    'scene.intersect_among(around.data(), count, run.data(), lanes, hits, open & ~left);' \
+    rt_tests $(unit 'ItemBuffer.*')
 mutant tile-rays-off-centre core/tile_rays.h \
     'camera.across(static_cast<float>(x) + 0.5f)' 'camera.across(static_cast<float>(x) + 0.49f)' \
     rt_tests $(unit 'Render.EveryPixelIsItsCentresRayTracedAlone')

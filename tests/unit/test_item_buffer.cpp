@@ -282,6 +282,47 @@ TEST(ItemBuffer, AnEdgePixelFindsTheObjectNamedNextToIt) {
     }
 }
 
+// In a run with an edge, the spheres and planes around are tested once for all its
+// pixels, a mesh only where what a pixel names did not meet it. Here a pixel inside a box
+// (a mesh) and its four neighbours name a sphere that lies elsewhere, and a pixel of the
+// run names the floor behind the box: the floor meets the pixel's ray, the sphere does
+// not, so the pixel is not settled by what it names, and the box, named around it, is
+// still tested (the floor alone would show through the box).
+TEST(ItemBuffer, APixelWhoseNamedObjectMissesStillMeetsTheMeshAroundIt) {
+    SceneDescription d;
+    d.materials.emplace_back();
+    d.materials.emplace_back();
+    d.materials.back().kd = vec3(0.1f, 0.9f, 0.2f);
+    d.meshes.push_back(test::box_mesh(vec3(-1.5f, -2, -0.5f), vec3(1.5f, 1, 0.5f),
+                                      test::Winding::kOutward));
+    d.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -2}, 0, {}});
+    d.objects.push_back(Object{"box", MeshRef{0, true}, 1, {}});
+    d.objects.push_back(Object{"ball", Sphere{{6, 4, -8}, 0.5f}, 0, {}});
+    d.lights.push_back(Light{Light::Type::kPoint, {3, 6, 6}, {0, -1, 0}, vec3(1.0f)});
+    d.camera = Camera::look_at({0, 3, 9}, {0, 0, 0}, {0, 1, 0}, 45.0f, 64, 48);
+    const Scene scene(std::move(d));
+    ItemBuffer ib = traced_item_buffer(scene);
+    constexpr std::uint32_t kFloor = 1, kBox = 2, kBall = 3;
+    int checked = 0;
+    RenderOptions options;
+    options.threads = 1;
+    const Image from_scratch = render(scene, options);
+    for (const int x : {28, 36}) {  // inside runs of eight (24 .. 31, 32 .. 39)
+        const int y = 24;
+        ASSERT_EQ(ib.object[ib.index(x, y)], kBox);
+        ItemBuffer named = ib;
+        for (const auto& [dx, dy] : {std::pair{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}})
+            named.object[named.index(x + dx, y + dy)] = kBall;
+        named.object[named.index(x + 3, y)] = kFloor;
+        const Image with = render(scene, options, nullptr, {}, {}, &named);
+        EXPECT_EQ(with.at(x, y), from_scratch.at(x, y)) << x;
+        Hit floor;
+        ASSERT_TRUE(scene.intersect_object(0, scene.camera.ray(x, y), floor));  // behind the box
+        ++checked;
+    }
+    EXPECT_EQ(checked, 2);
+}
+
 // A sphere under a couple of pixels across may cover pixel centres the raster's
 // tessellation does not (many_spheres far off), and then nothing around names it: the
 // renderer tests such objects itself where their screen boxes lie (core/small_objects.h).
