@@ -293,8 +293,8 @@ TEST(ItemBuffer, APixelWhoseNamedObjectMissesStillMeetsTheMeshAroundIt) {
     d.materials.emplace_back();
     d.materials.emplace_back();
     d.materials.back().kd = vec3(0.1f, 0.9f, 0.2f);
-    d.meshes.push_back(test::box_mesh(vec3(-1.5f, -2, -0.5f), vec3(1.5f, 1, 0.5f),
-                                      test::Winding::kOutward));
+    d.meshes.push_back(
+        test::box_mesh(vec3(-1.5f, -2, -0.5f), vec3(1.5f, 1, 0.5f), test::Winding::kOutward));
     d.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -2}, 0, {}});
     d.objects.push_back(Object{"box", MeshRef{0, true}, 1, {}});
     d.objects.push_back(Object{"ball", Sphere{{6, 4, -8}, 0.5f}, 0, {}});
