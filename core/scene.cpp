@@ -149,6 +149,22 @@ unsigned shape_packet(const Shape& shape, std::uint32_t object, const RayLanes<k
     out.t_max =
         fresh ? splat<Lanes<kPacketWidth>::Float>(kInfinity) : t_bounds<kPacketWidth>(hits, lanes);
     const unsigned hit = intersect_lanes(shape, r, lanes, out);
+    if (fresh && lanes == (1u << kPacketWidth) - 1u) {
+        // The whole packet is this object's: every record written, without a branch (a
+        // loop over the hits' bits, its exit mispredicted, took 15-17 % of the item
+        // buffer's primary step: tutorial, whitted at 1 thread).
+#pragma GCC unroll 8
+        for (int lane = 0; lane < kPacketWidth; ++lane) {
+            const bool on = (hit >> lane) & 1u;
+            hits[lane].t = on ? out.t[lane] : kInfinity;
+            hits[lane].object = on ? object : kNoObject;
+            if constexpr (std::is_same_v<Shape, Triangle>) {
+                hits[lane].b1 = on ? out.b1[lane] : 0.0f;
+                hits[lane].b2 = on ? out.b2[lane] : 0.0f;
+            }
+        }
+        return hit;
+    }
     for (unsigned rest = hit; rest != 0; rest &= rest - 1) {
         const unsigned lane = __builtin_ctz(rest);
         if constexpr (std::is_same_v<Shape, Triangle>) {

@@ -402,6 +402,15 @@ mutant edge-run-tests-only-the-edge core/renderer.cpp \
     'scene.intersect_among(around.data(), count, run.data(), lanes, hits, open);' \
     'scene.intersect_among(around.data(), count, run.data(), lanes, hits, open & ~left);' \
     rt_tests $(unit 'ItemBuffer.*')
+mutant whole-packet-misses-named core/scene.cpp \
+    'hits[lane].object = on ? object : kNoObject;' 'hits[lane].object = object;' \
+    rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
+mutant whole-packet-misses-keep-their-t core/scene.cpp \
+    'hits[lane].t = on ? out.t[lane] : kInfinity;' 'hits[lane].t = out.t[lane];' \
+    rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
+mutant whole-packet-barycentrics-swapped core/scene.cpp \
+    'hits[lane].b1 = on ? out.b1[lane] : 0.0f;' 'hits[lane].b1 = on ? out.b2[lane] : 0.0f;' \
+    rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
 mutant tile-rays-off-centre core/tile_rays.h \
     'camera.across(static_cast<float>(x) + 0.5f)' 'camera.across(static_cast<float>(x) + 0.49f)' \
     rt_tests $(unit 'Render.EveryPixelIsItsCentresRayTracedAlone')
