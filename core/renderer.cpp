@@ -58,6 +58,26 @@ using detail::tile_count;
 using detail::TileRays;
 using detail::TileRunner;
 
+template <class V>
+V least(V a, V b) {
+    return a < b ? a : b;
+}
+
+// The least of v's lanes in every lane: halvings, a lane against the one across.
+template <class V>
+V least_in_every_lane(V v) {
+    constexpr int kWidth = sizeof(V) / sizeof(v[0]);
+    if constexpr (kWidth == 8) {
+        v = least(v, __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3));
+        v = least(v, __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5));
+        return least(v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));
+    } else {
+        static_assert(kWidth == 4, "four or eight lanes (core/simd.h)");
+        v = least(v, __builtin_shufflevector(v, v, 2, 3, 0, 1));
+        return least(v, __builtin_shufflevector(v, v, 1, 0, 3, 2));
+    }
+}
+
 // The objects named around pixels x0 .. x1 of row y (their 3 x 3 blocks), each once, in
 // the order of their indices. The three rows' ids, at most kPacketWidth + 2 each, sit in
 // two vectors a row, as indices (id - 1: the background, kEmpty, wraps to the largest);
@@ -93,14 +113,10 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
         ids[vectors++] = ItemBuffer::load(padded) - 1u;
         ids[vectors++] = ItemBuffer::load(padded + kPacketWidth) - 1u;
     }
-    const auto least = [](Ids a, Ids b) { return a < b ? a : b; };
     int count = 0;
     for (;;) {
-        Ids m = least(least(least(ids[0], ids[1]), least(ids[2], ids[3])), least(ids[4], ids[5]));
-        static_assert(kPacketWidth == 8, "three halvings find the least of a vector");
-        m = least(m, __builtin_shufflevector(m, m, 4, 5, 6, 7, 0, 1, 2, 3));
-        m = least(m, __builtin_shufflevector(m, m, 2, 3, 0, 1, 6, 7, 4, 5));
-        m = least(m, __builtin_shufflevector(m, m, 1, 0, 3, 2, 5, 4, 7, 6));
+        const Ids m = least_in_every_lane(
+            least(least(least(ids[0], ids[1]), least(ids[2], ids[3])), least(ids[4], ids[5])));
         const std::uint32_t object = m[0];
         if (object == kNone) return count;
         out[count++] = object;

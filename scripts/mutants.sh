@@ -389,7 +389,7 @@ mutant item-buffer-lanes-unmasked core/mesh.cpp \
     '1u << (at % kTriangle4Lanes));' '0xfu);' \
     rt_tests $(unit 'Triangle.*')
 mutant shared-ids-written-by-lines app/gl/raster_renderer.cpp \
-    'if (drawing_ids_) {' 'if (false) {' \
+    'if (drawing_ids_) drawing_ids_->draw_ids(false);' '' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*TheColourPassDrawsTheSameItemBuffer*'
 mutant edge-run-trusts-any-hit core/renderer.cpp \
     'if (hits[lane].found() && hits[lane].object + 1 == ib.object[at + lane]) trusted |= k & -k;' \
@@ -411,6 +411,9 @@ mutant whole-packet-misses-keep-their-t core/scene.cpp \
 mutant whole-packet-barycentrics-swapped core/scene.cpp \
     'hits[lane].b1 = on ? out.b1[lane] : 0.0f;' 'hits[lane].b1 = on ? out.b2[lane] : 0.0f;' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
+mutant objects-around-half-the-lanes core/renderer.cpp \
+    'return least(v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));' 'return v;' \
+    rt_tests $(unit 'ItemBuffer.*')
 mutant tile-rays-off-centre core/tile_rays.h \
     'camera.across(static_cast<float>(x) + 0.5f)' 'camera.across(static_cast<float>(x) + 0.49f)' \
     rt_tests $(unit 'Render.EveryPixelIsItsCentresRayTracedAlone')
@@ -571,19 +574,19 @@ mutant interior-run-sees-no-side-neighbour core/item_buffer.h \
     'const Ids differ = (load(centre + 1) ^ id) |' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant item-buffer-run-never-falls-back core/renderer.cpp \
-    'const unsigned edge = all & ~settled;' 'const unsigned edge = 0;' \
+    'const unsigned open = all & ~settled;' 'const unsigned open = 0;' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant edge-pixels-look-along-their-row-only core/renderer.cpp \
     'for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {' \
     'for (int row = y; row <= y; ++row) {' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant objects-around-drop-the-right-neighbours core/renderer.cpp \
-    'ids[vectors++] = ItemBuffer::load(at + kPacketWidth) & in_span[1];' \
-    'ids[vectors++] = ItemBuffer::load(at + kPacketWidth) & Ids{};' \
+    'ids[vectors++] = (ItemBuffer::load(at + kPacketWidth) & in_span[1]) - 1u;' \
+    'ids[vectors++] = (ItemBuffer::load(at + kPacketWidth) & Ids{}) - 1u;' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant objects-around-first-found-not-cleared core/renderer.cpp \
-    'for (int k = v; k < vectors; ++k) ids[k] &= ~(ids[k] == (Ids{} + id));' \
-    'for (int k = v + 1; k < vectors; ++k) ids[k] &= ~(ids[k] == (Ids{} + id));' \
+    'for (Ids& v : ids) v |= Ids(v == m);  // m is the least in every lane' \
+    'for (Ids& v : ids) v |= Ids(v == m) & Ids{};' \
     rt_tests timeout 60 $(unit 'ItemBuffer.*')
 mutant per-lane-triangles-all-named-the-first core/mesh_packet.cpp \
     'hits[ray].prim = prims[ray];' 'hits[ray].prim = first;' \
@@ -672,10 +675,11 @@ mutant oracle-transform-normal core/transform.cpp \
 # Objects too small on the screen for the item buffer (core/small_objects.h): their
 # pixels are taken from the ids' trust and tested against them.
 mutant small-objects-pixels-still-trusted core/renderer.cpp \
-    'const unsigned edge = all & ~(settled & ~under_tiny);' 'const unsigned edge = all & ~settled;' \
+    'own_ids(scene, ib, at, n, lanes, hits, interior, !whole, left) & ~tiny.lanes;' \
+    'own_ids(scene, ib, at, n, lanes, hits, interior, !whole, left);' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant small-objects-not-tested core/renderer.cpp \
-    'scene.intersect_among(tiny.data(), tiny_count, rays, lanes, hits, edge);' '' \
+    'scene.intersect_among(tiny.objects.data(), tiny.count, run.data(), lanes, hits, open);' '' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant small-objects-none-small-enough core/small_objects.h \
     'static constexpr float kPixels = 6.0f;' 'static constexpr float kPixels = 1.0f;' \

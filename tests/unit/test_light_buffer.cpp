@@ -437,7 +437,7 @@ TEST(ShadowFeelers, APacketAnswersAsEachFeelerAlone) {
             }
         }
     }
-    EXPECT_GT(feelers, 20000);
+    EXPECT_GT(feelers, 2500 * kPacketWidth);  // packets of 8, or 4 under SSE2
     EXPECT_GT(blocked, feelers / 10);
     EXPECT_LT(blocked, feelers - feelers / 10);
     EXPECT_GT(shared, 200) << "groups blocked together";
