@@ -594,15 +594,15 @@ mutant per-lane-triangles-all-named-the-first core/mesh_packet.cpp \
 mutant item-buffer-read-into-storage-keeps-its-height core/item_buffer.h \
     'width = w, height = h;' 'width = w;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*EarlierFrame*'
-mutant triangle-ids-never-drawn app/gl/raster_renderer.cpp \
-    'return std::holds_alternative<MeshRef>(o.shape);' 'return std::holds_alternative<MeshRef>(o.shape) && false;' \
-    rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*'
-mutant triangle-ids-drawn-without-a-mesh app/gl/raster_renderer.cpp \
-    'return std::holds_alternative<MeshRef>(o.shape);' 'return true;' \
-    rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*'
+mutant triangle-ids-never-drawn app/gl/framebuffer.cpp \
+    'if (most_triangles == 0) return {Kind::kObjectsOnly, 0};' 'return {Kind::kObjectsOnly, 0};' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*:*PacksWhere*'
+mutant triangle-ids-packed-past-their-bits app/gl/framebuffer.cpp \
+    'most_triangles <= (std::uint64_t{1} << prim_bits)' 'most_triangles <= (std::uint64_t{2} << prim_bits)' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*:*PacksWhere*:*PackedIds*'
 mutant triangle-ids-read-though-not-drawn app/gl/framebuffer.cpp \
-    'for (int k = 0; k < (triangle_ids_ ? 2 : 1); ++k) {' 'for (int k = 0; k < 2; ++k) {' \
-    rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*:*SameItemBuffer*'
+    'for (int k = 0; k < (ids_.second_target() ? 2 : 1); ++k) {' 'for (int k = 0; k < 2; ++k) {' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*:*SameItemBuffer*:*PackedIds*'
 mutant item-buffer-edges-take-their-hits-as-fresh core/scene.h \
     'unsigned lanes, bool fresh = false) const;' 'unsigned lanes, bool fresh = true) const;' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
