@@ -109,7 +109,7 @@ vec3 item_colour(std::uint32_t id) {
 
 Image item_buffer_image(const ItemBuffer& ib) {
     Image out(ib.width, ib.height);
-    for (std::size_t i = 0; i < ib.object.size(); ++i) out.pixels[i] = item_colour(ib.object[i]);
+    for (std::size_t i = 0; i < ib.ids.size(); ++i) out.pixels[i] = item_colour(ib.object_id(i));
     return out;
 }
 

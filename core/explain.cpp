@@ -113,7 +113,8 @@ ExplainMap explain(const Scene& scene, const Camera& camera, const RenderOptions
                 if (tricks)
                     added = {at(tricks->shadow, i), at(tricks->reflection, i),
                              at(tricks->refraction, i)};
-                map.terms[i] = explain_terms(parts, raster.pixels[i], raster_ids.object[i], added);
+                map.terms[i] =
+                    explain_terms(parts, raster.pixels[i], raster_ids.object_id(i), added);
                 const vec3 shown = finite(raster.pixels[i])
                                        ? glm::abs(srgb_encode(map.traced.pixels[i]) -
                                                   srgb_encode(raster.pixels[i]))

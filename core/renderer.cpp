@@ -102,16 +102,16 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
     const Ids in_span[2] = {Ids(kLane < Ids{} + static_cast<std::uint32_t>(span)),
                             Ids(kLane + kPacketWidth < Ids{} + static_cast<std::uint32_t>(span))};
     for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {
-        const std::uint32_t* at = &ib.object[ib.index(left, row)];
+        const std::size_t at = ib.index(left, row);
         if (left + kRow <= ib.width) {  // two whole vectors in the row: the span's lanes kept
-            ids[vectors++] = (ItemBuffer::load(at) & in_span[0]) - 1u;
-            ids[vectors++] = (ItemBuffer::load(at + kPacketWidth) & in_span[1]) - 1u;
+            ids[vectors++] = (ib.object_ids(at) & in_span[0]) - 1u;
+            ids[vectors++] = (ib.object_ids(at + kPacketWidth) & in_span[1]) - 1u;
             continue;
         }
         std::uint32_t padded[kRow] = {};  // kEmpty beyond the span
-        std::memcpy(padded, at, static_cast<std::size_t>(span) * sizeof *at);
-        ids[vectors++] = ItemBuffer::load(padded) - 1u;
-        ids[vectors++] = ItemBuffer::load(padded + kPacketWidth) - 1u;
+        std::memcpy(padded, &ib.ids[at], static_cast<std::size_t>(span) * sizeof padded[0]);
+        ids[vectors++] = (ItemBuffer::load(padded) >> ib.prim_bits) - 1u;
+        ids[vectors++] = (ItemBuffer::load(padded + kPacketWidth) >> ib.prim_bits) - 1u;
     }
     int count = 0;
     for (;;) {
@@ -162,9 +162,11 @@ unsigned own_ids(const Scene& scene, const ItemBuffer& ib, std::size_t at, int n
                  const RayLanes<kPacketWidth>& lanes, Hit* hits, unsigned rest, bool meshes_only,
                  unsigned& left) {
     unsigned settled = 0;
+    std::uint32_t triangles[kPacketWidth];
+    bool have_triangles = false;
     while (rest != 0) {
-        const std::uint32_t id = ib.object[at + __builtin_ctz(rest)];
-        const unsigned same = ItemBuffer::same_run(ib.object, at, n, id) & rest;
+        const std::uint32_t id = ib.object_id(at + __builtin_ctz(rest));
+        const unsigned same = ib.same_object_run(at, n, id) & rest;
         rest &= ~same;
         if (id == ItemBuffer::kEmpty) {
             settled |= same;  // nothing here nor around it
@@ -174,7 +176,8 @@ unsigned own_ids(const Scene& scene, const ItemBuffer& ib, std::size_t at, int n
             left |= same;
             continue;
         }
-        settled |= scene.intersect_primitive_packet(id - 1, &ib.prim[at], lanes, hits, same, true);
+        if (!have_triangles) ib.triangles(at, n, triangles), have_triangles = true;
+        settled |= scene.intersect_primitive_packet(id - 1, triangles, lanes, hits, same, true);
     }
     return settled;
 }
@@ -230,7 +233,8 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects
     unsigned trusted = 0;  // met what they name, inside its region: as own_ids leaves them
     for (unsigned k = left & open; k != 0; k &= k - 1) {
         const int lane = __builtin_ctz(k);
-        if (hits[lane].found() && hits[lane].object + 1 == ib.object[at + lane]) trusted |= k & -k;
+        if (hits[lane].found() && hits[lane].object + 1 == ib.object_id(at + lane))
+            trusted |= k & -k;
     }
     scene.intersect_among(meshes.data(), mesh_count, run.data(), lanes, hits, open & ~trusted);
     return on_edges;
@@ -245,7 +249,7 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects
 [[gnu::always_inline]] inline void ask_for_ids(const ItemBuffer& ib, int x0, int x1, int y) {
     if (y >= ib.height) return;
     constexpr int kPerLine = 64 / sizeof(std::uint32_t);
-    const std::uint32_t* row = &ib.object[ib.index(0, y)];
+    const std::uint32_t* row = &ib.ids[ib.index(0, y)];
     const int last = std::min(ib.width - 1, x1);
     for (int x = std::max(0, x0 - 1); x < last; x += kPerLine) __builtin_prefetch(row + x);
     __builtin_prefetch(row + last);

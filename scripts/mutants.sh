@@ -128,8 +128,9 @@ mutant ply-binary-list-length-byte-order core/ply_check.cpp \
     'const int byte = h.format != Format::kBig ? k : p.count_bytes - 1 - k;' \
     rt_tests $(unit 'PlyStl.*')
 # The item buffer's packed ids (app/gl/framebuffer.h, IdLayout).
-mutant packed-ids-mask-one-bit-short app/gl/framebuffer.cpp \
-    'prim[i] = words[i] & mask;' 'prim[i] = words[i] & (mask >> 1);' \
+mutant packed-ids-mask-one-bit-short core/item_buffer.h \
+    'std::uint32_t prim_mask() const { return (std::uint32_t{1} << prim_bits) - 1u; }' \
+    'std::uint32_t prim_mask() const { return (std::uint32_t{1} << prim_bits) / 2 - 1u; }' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*PackedIds*'
 mutant packed-ids-unmasked-in-shader shaders/itembuffer.frag \
     '(prim & ((1u << u_prim_bits) - 1u))' 'prim' \
@@ -392,7 +393,7 @@ mutant shared-ids-written-by-lines app/gl/raster_renderer.cpp \
     'if (drawing_ids_) drawing_ids_->draw_ids(false);' '' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*TheColourPassDrawsTheSameItemBuffer*'
 mutant edge-run-trusts-any-hit core/renderer.cpp \
-    'if (hits[lane].found() && hits[lane].object + 1 == ib.object[at + lane]) trusted |= k & -k;' \
+    'if (hits[lane].found() && hits[lane].object + 1 == ib.object_id(at + lane)) trusted |= k & -k;' \
     'if (hits[lane].found()) trusted |= k & -k;' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant edge-run-leaves-the-meshes-out core/renderer.cpp \
@@ -555,7 +556,7 @@ mutant packet-mesh-sees-world-rays core/scene.cpp \
     'intersect_packet(local.data(), hits, lanes)' 'intersect_packet(rays, hits, lanes)' \
     rt_tests $(unit 'ScenePackets.*')
 mutant item-buffer-interior-misses-the-one-above core/item_buffer.h \
-    '(at[-width] ^ id) | (at[width] ^ id)) == 0;' '(at[-width] ^ id)) == 0;' \
+    '(at[-width] ^ id) | (at[width] ^ id)) >>' '(at[-width] ^ id)) >>' \
     rt_tests $(unit 'ItemBuffer.Interior*')
 mutant item-buffer-packet-lanes-unmasked core/mesh_packet.cpp \
     '1u << (at % kTriangle4Lanes));' '0xfu);' \
@@ -570,8 +571,8 @@ mutant ray-lanes-lose-the-translation core/ray_lanes.h \
     '(m[2][row] * v[2] + m[3][row] * w)' '(m[2][row] * v[2])' \
     rt_tests $(unit 'RayLanes.*')
 mutant interior-run-sees-no-side-neighbour core/item_buffer.h \
-    'const Ids differ = (load(centre - 1) ^ id) | (load(centre + 1) ^ id) |' \
-    'const Ids differ = (load(centre + 1) ^ id) |' \
+    'const Ids differ = ((load(centre - 1) ^ id) | (load(centre + 1) ^ id) |' \
+    'const Ids differ = ((load(centre + 1) ^ id) |' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant item-buffer-run-never-falls-back core/renderer.cpp \
     'const unsigned open = all & ~settled;' 'const unsigned open = 0;' \
@@ -581,8 +582,8 @@ mutant edge-pixels-look-along-their-row-only core/renderer.cpp \
     'for (int row = y; row <= y; ++row) {' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant objects-around-drop-the-right-neighbours core/renderer.cpp \
-    'ids[vectors++] = (ItemBuffer::load(at + kPacketWidth) & in_span[1]) - 1u;' \
-    'ids[vectors++] = (ItemBuffer::load(at + kPacketWidth) & Ids{}) - 1u;' \
+    'ids[vectors++] = (ib.object_ids(at + kPacketWidth) & in_span[1]) - 1u;' \
+    'ids[vectors++] = (ib.object_ids(at + kPacketWidth) & Ids{}) - 1u;' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant objects-around-first-found-not-cleared core/renderer.cpp \
     'for (Ids& v : ids) v |= Ids(v == m);  // m is the least in every lane' \
@@ -591,8 +592,29 @@ mutant objects-around-first-found-not-cleared core/renderer.cpp \
 mutant per-lane-triangles-all-named-the-first core/mesh_packet.cpp \
     'hits[ray].prim = prims[ray];' 'hits[ray].prim = first;' \
     rt_tests $(unit 'ScenePackets.*')
+mutant packed-ids-read-as-objects core/item_buffer.h \
+    'Ids object_ids(std::size_t i) const { return load(&ids[i]) >> prim_bits; }' \
+    'Ids object_ids(std::size_t i) const { return load(&ids[i]); }' \
+    rt_tests timeout 60 $(unit 'ItemBuffer.ARunsCheckIsEachPixelsOwn')
+mutant packed-ids-interior-sees-triangles core/item_buffer.h \
+    '(load(centre - w) ^ id) | (load(centre + w) ^ id)) >>
+                                   prim_bits;' \
+    '(load(centre - w) ^ id) | (load(centre + w) ^ id)) >>
+                                   0;' \
+    rt_tests $(unit 'ItemBuffer.ARunsCheckIsEachPixelsOwn')
+mutant packed-ids-triangles-keep-the-object core/item_buffer.h \
+    'const Ids t = prim.empty() ? load(&ids[i]) & prim_mask() : load(&prim[i]);' \
+    'const Ids t = prim.empty() ? load(&ids[i]) : load(&prim[i]);' \
+    rt_tests $(unit 'ItemBuffer.AFrameFromAPerfectItemBufferIsTheFrameFromScratch')
+mutant packed-ids-read-back-unshifted app/gl/framebuffer.cpp \
+    'ib.resize(fb_.width_, fb_.height_, static_cast<int>(layout.shader_prim_bits()),' \
+    'ib.resize(fb_.width_, fb_.height_, 0,' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*:*PackedIds*:*SameItemBuffer*'
+mutant ids-read-straight-leave-the-triangles app/gl/framebuffer.cpp \
+    'fb_.read_ids(ib.ids.data(), ib.prim.data());' 'fb_.read_ids(ib.ids.data(), ib.ids.data());' \
+    rt_gl_tests "${gl[@]}" --gtest_filter='*IdsReadStraight*'
 mutant item-buffer-read-into-storage-keeps-its-height core/item_buffer.h \
-    'width = w, height = h;' 'width = w;' \
+    'width = w, height = h, prim_bits = bits;' 'width = w, prim_bits = bits;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*EarlierFrame*'
 mutant triangle-ids-never-drawn app/gl/framebuffer.cpp \
     'if (most_triangles == 0) return {Kind::kObjectsOnly, 0};' 'return {Kind::kObjectsOnly, 0};' \

@@ -80,7 +80,7 @@ Samples measure(const ItemBufferBenchOptions& o, const rt::Scene& scene,
                 m.ids_cost.push_back(with_ids - plain_raster);
             }
         }
-        if (frame.ids.object != ib.object || frame.ids.prim != ib.prim)
+        if (frame.ids.ids != ib.ids || frame.ids.prim != ib.prim)
             throw rt::Error(o.scene, "item buffer",
                             "the raster pass's item buffer differs from the dedicated pass's");
         if (k > 0) m.trace_with.push_back(m.stats.seconds);

@@ -11,6 +11,17 @@
 namespace rt::gl {
 
 namespace {
+// A rasteriser that runs on the CPU, where a pixel buffer object copies nothing in the
+// background (Mesa's llvmpipe and softpipe; "swrast" in older names).
+bool software_renderer() {
+    const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (!name) return false;
+    const std::string renderer(name);
+    for (const char* cpu : {"llvmpipe", "softpipe", "swrast"})
+        if (renderer.find(cpu) != std::string::npos) return true;
+    return false;
+}
+
 void require_complete(const char* what) {
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
@@ -38,8 +49,8 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples, IdLayout
     // The colour (all but kItemBuffer), the ids (kItemBuffer, kColourAndIds), and the
     // triangles' own target only where the layout has one.
     const bool has_ids = kind == Kind::kItemBuffer || kind == Kind::kColourAndIds;
-    const int attachments = (kind == Kind::kItemBuffer ? 0 : 1) +
-                            (has_ids ? 1 + (ids.second_target() ? 1 : 0) : 0);
+    const int attachments =
+        (kind == Kind::kItemBuffer ? 0 : 1) + (has_ids ? 1 + (ids.second_target() ? 1 : 0) : 0);
     for (int i = 0; i < attachments; ++i) {
         colour_[i] = make_texture();
         glBindTexture(GL_TEXTURE_2D, colour_[i].get());
@@ -93,6 +104,7 @@ Framebuffer::Framebuffer(Kind kind, int width, int height, int samples, IdLayout
                      static_cast<GLsizeiptr>(width) * height * (ids.second_target() ? 8 : 4),
                      nullptr, GL_STREAM_READ);
         glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+        software_ = software_renderer();
     }
     check("Framebuffer");
 }
@@ -170,22 +182,29 @@ std::uint32_t Framebuffer::read_id(int x, int y) const {
 
 ItemBuffer Framebuffer::read_item_buffer() const { return start_item_buffer_read().finish(); }
 
-// The id attachments into one buffer, objects then any triangles: glReadPixels into a
-// bound pixel-pack buffer returns at once on a GPU, the copy going on while the CPU works.
-Framebuffer::ItemBufferRead Framebuffer::start_item_buffer_read() const {
-    const ItemBufferRead read(width_, height_, ids_pbo_.get(), ids_);
-    const auto bytes = static_cast<GLsizeiptr>(width_) * height_ * 4;
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, ids_pbo_.get());
+void Framebuffer::read_ids(void* objects, void* triangles) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     for (int k = 0; k < (ids_.second_target() ? 2 : 1); ++k) {
         glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(id_attachment() + k));
         glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                     reinterpret_cast<void*>(static_cast<std::uintptr_t>(k * bytes)));
+                     k == 0 ? objects : triangles);
     }
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    check("start_item_buffer_read");
-    return read;
+}
+
+// The id attachments into the framebuffer's pixel buffer, objects then any triangles:
+// glReadPixels into a bound pixel-pack buffer returns at once on a GPU, the copy going on
+// while the CPU works. Directly: nothing until finish.
+Framebuffer::ItemBufferRead Framebuffer::start_item_buffer_read(IdReads how) const {
+    const bool direct = how == IdReads::kDirect || (how == IdReads::kAuto && software_);
+    if (!direct) {
+        const std::uintptr_t bytes = static_cast<std::uintptr_t>(width_) * height_ * 4;
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, ids_pbo_.get());
+        read_ids(nullptr, reinterpret_cast<void*>(bytes));  // offsets into the buffer
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+        check("start_item_buffer_read");
+    }
+    return ItemBufferRead(*this, direct);
 }
 
 ItemBuffer Framebuffer::ItemBufferRead::finish() {
@@ -194,36 +213,26 @@ ItemBuffer Framebuffer::ItemBufferRead::finish() {
     return ib;
 }
 
+// As the targets hold them: packed ids stay packed (ItemBuffer::ids), objects alone are
+// packed ids of no triangle bits, and only separate triangles fill ib.prim.
 void Framebuffer::ItemBufferRead::finish(ItemBuffer& ib) {
-    ib.resize(width_, height_);
-    const std::size_t count = ib.object.size();
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, pbo_);
-    const std::size_t targets = ids_.second_target() ? 2 : 1;
+    const IdLayout& layout = fb_.ids_;
+    ib.resize(fb_.width_, fb_.height_, static_cast<int>(layout.shader_prim_bits()),
+              layout.second_target());
+    const std::size_t count = ib.ids.size();
+    if (direct_) {
+        fb_.read_ids(ib.ids.data(), ib.prim.data());
+        check("ItemBufferRead::finish");
+        return;
+    }
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, fb_.ids_pbo_.get());
+    const std::size_t targets = layout.second_target() ? 2 : 1;
     const void* data = glMapBufferRange(
         GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(targets * count * 4), GL_MAP_READ_BIT);
     if (data) {
         const auto* words = static_cast<const std::uint32_t*>(data);
-        switch (ids_.kind) {
-            case IdLayout::Kind::kSeparate:
-                std::copy(words, words + count, ib.object.begin());
-                std::copy(words + count, words + 2 * count, ib.prim.begin());
-                break;
-            case IdLayout::Kind::kPacked: {
-                const int bits = ids_.prim_bits;
-                const std::uint32_t mask = (std::uint32_t{1} << bits) - 1u;
-                std::uint32_t* object = ib.object.data();
-                std::uint32_t* prim = ib.prim.data();
-                for (std::size_t i = 0; i < count; ++i) {
-                    object[i] = words[i] >> bits;
-                    prim[i] = words[i] & mask;
-                }
-                break;
-            }
-            case IdLayout::Kind::kObjectsOnly:
-                std::copy(words, words + count, ib.object.begin());
-                std::fill(ib.prim.begin(), ib.prim.end(), 0u);
-                break;
-        }
+        std::copy(words, words + count, ib.ids.begin());
+        if (layout.second_target()) std::copy(words + count, words + 2 * count, ib.prim.begin());
         glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
     }
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);

@@ -229,7 +229,7 @@ void RasterRenderer::render_with_item_buffer(const Camera& camera, Frame& frame)
     frame.shared = shares_item_buffer();
     if (frame.shared) {
         const Framebuffer& fb = render_to_texture(camera, true);
-        Framebuffer::ItemBufferRead ids = fb.start_item_buffer_read();
+        Framebuffer::ItemBufferRead ids = fb.start_item_buffer_read(id_reads_);
         fb.read_colour(frame.image);  // meanwhile, on a GPU
         ids.finish(frame.ids);
         return;
@@ -258,7 +258,7 @@ ItemBuffer RasterRenderer::render_item_buffer(const Camera& camera) {
 }
 
 void RasterRenderer::render_item_buffer(const Camera& camera, ItemBuffer& into) {
-    render_item_buffer_to_texture(camera).start_item_buffer_read().finish(into);
+    render_item_buffer_to_texture(camera).start_item_buffer_read(id_reads_).finish(into);
 }
 
 }  // namespace rt::gl

@@ -58,6 +58,8 @@ class RasterRenderer {
     // the layouts); setting it drops the targets, made again at the next pass.
     const IdLayout& id_layout() const { return id_layout_; }
     void set_id_layout(IdLayout layout);
+    // How the ids are read back (Framebuffer::IdReads; kAuto unless a test compares).
+    void set_id_reads(Framebuffer::IdReads how) { id_reads_ = how; }
 
     // Multisample anti-aliasing of the colour pass (1, 2, 4 or 8 samples; 1: none). The
     // item buffer stays one sample a pixel: an object id cannot be averaged.
@@ -121,6 +123,7 @@ class RasterRenderer {
     std::optional<Framebuffer> shared_target_;  // colour and ids from one draw
     const Framebuffer* drawing_ids_ = nullptr;  // the bound target, where it is shared_target_
     IdLayout id_layout_;                        // Framebuffer's ctor and the shaders' u_prim_bits
+    Framebuffer::IdReads id_reads_ = Framebuffer::IdReads::kAuto;
     int msaa_ = 1;
     bool shadow_maps_ = false;
     int shadow_size_ = 1024;

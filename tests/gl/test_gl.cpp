@@ -72,7 +72,7 @@ LocalAgreement raster_against_local_trace(const Scene& scene, bool objects_only)
     for (int y = 0; y < r.height; ++y) {
         for (int x = 0; x < r.width; ++x) {
             if (!ib.interior(x, y)) continue;
-            if (objects_only && ib.object[ib.index(x, y)] == ItemBuffer::kEmpty) continue;
+            if (objects_only && ib.object_id(ib.index(x, y)) == ItemBuffer::kEmpty) continue;
             ++out.inside;
             out.off += differ_on_screen(r.at(x, y), t.at(x, y));
         }
@@ -142,7 +142,7 @@ TEST_P(Gl, TexturesShowAlikeInBothPipelines) {
         std::size_t textured = 0, off = 0, raster_changed = 0, traced_changed = 0;
         for (int y = 0; y < r.height; ++y) {
             for (int x = 0; x < r.width; ++x) {
-                const std::uint32_t id = ib.object[ib.index(x, y)];
+                const std::uint32_t id = ib.object_id(ib.index(x, y));
                 if (!ib.interior(x, y) || id == ItemBuffer::kEmpty) continue;
                 const Object& o = loaded.scene.objects[id - 1];
                 if (!std::holds_alternative<MeshRef>(o.shape)) continue;  // the floor, the mirror
@@ -207,7 +207,7 @@ bool inside_one_triangle(const ItemBuffer& ib, int x, int y) {
         for (int dx = -1; dx <= 1; ++dx) {
             const int nx = std::clamp(x + dx, 0, ib.width - 1),
                       ny = std::clamp(y + dy, 0, ib.height - 1);
-            if (ib.prim[ib.index(nx, ny)] != ib.prim[ib.index(x, y)]) return false;
+            if (ib.triangle(ib.index(nx, ny)) != ib.triangle(ib.index(x, y))) return false;
         }
     return true;
 }
@@ -290,7 +290,7 @@ double psnr_on(const Image& a, const Image& b, const ItemBuffer& ib, std::uint32
     double sum = 0.0;
     std::size_t n = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        if (ib.object[i] != object + 1 ||
+        if (ib.object_id(i) != object + 1 ||
             !ib.interior(static_cast<int>(i % ib.width), static_cast<int>(i / ib.width)))
             continue;
         for (int k = 0; k < 3; ++k) {
@@ -606,7 +606,7 @@ TEST_P(Gl, LinesAndPointsAreDrawnByTheRasterOnly) {
     EXPECT_GT(drawn, 96);           // four edges across a good part of the frame
     EXPECT_LT(drawn, 96 * 72 / 4);  // lines, not a filled square
     const ItemBuffer ib = raster.render_item_buffer(scene.camera);
-    for (std::uint32_t id : ib.object) EXPECT_EQ(id, ItemBuffer::kEmpty);
+    for (std::size_t i = 0; i < ib.ids.size(); ++i) EXPECT_EQ(ib.object_id(i), ItemBuffer::kEmpty);
     const Image traced = render(scene, {});
     for (const vec3& p : traced.pixels) EXPECT_EQ(p, scene.background);
 }

@@ -37,7 +37,7 @@ TEST_P(GlItemBuffer, ItemBufferNamesTheObjectAtEachPixel) {
             Hit hit;
             scene.intersect(scene.camera.ray(x, y), hit);
             const std::uint32_t expected = hit.found() ? hit.object + 1 : ItemBuffer::kEmpty;
-            EXPECT_EQ(ib.object[ib.index(x, y)], expected) << x << "," << y;
+            EXPECT_EQ(ib.object_id(ib.index(x, y)), expected) << x << "," << y;
             ++checked;
         }
     }
@@ -56,14 +56,14 @@ TEST_P(GlItemBuffer, ItemBufferNamesTheTriangleOfAMesh) {
             int same = 0, interior = 0;
             for (int y = 0; y < ib.height; ++y) {
                 for (int x = 0; x < ib.width; ++x) {
-                    const std::uint32_t id = ib.object[ib.index(x, y)];
+                    const std::uint32_t id = ib.object_id(ib.index(x, y));
                     if (!ib.interior(x, y) || id == ItemBuffer::kEmpty ||
                         !std::holds_alternative<MeshRef>(scene.objects[id - 1].shape))
                         continue;
                     Hit hit;
                     scene.intersect(scene.camera.ray(x, y), hit);
                     ++interior;
-                    same += hit.prim == ib.prim[ib.index(x, y)];
+                    same += hit.prim == ib.triangle(ib.index(x, y));
                 }
             }
             // Within one object, neighbouring triangles share an edge the item buffer does
@@ -77,12 +77,15 @@ TEST_P(GlItemBuffer, ItemBufferNamesTheTriangleOfAMesh) {
     gl::RasterRenderer raster(spheres);
     for (const ItemBuffer& ib : {raster.render_item_buffer(spheres.camera),
                                  raster.render_with_item_buffer(spheres.camera).ids}) {
-        EXPECT_EQ(std::count(ib.prim.begin(), ib.prim.end(), 0u),
-                  static_cast<std::ptrdiff_t>(ib.prim.size()));
-        EXPECT_GT(std::count(ib.object.begin(), ib.object.end(), ItemBuffer::kEmpty),
-                  0);  // some background
-        EXPECT_LT(std::count(ib.object.begin(), ib.object.end(), ItemBuffer::kEmpty),
-                  static_cast<std::ptrdiff_t>(ib.object.size() / 2));
+        EXPECT_TRUE(ib.prim.empty());  // the objects alone, read as they were drawn
+        std::size_t background = 0, triangles = 0;
+        for (std::size_t i = 0; i < ib.ids.size(); ++i) {
+            background += ib.object_id(i) == ItemBuffer::kEmpty;
+            triangles += ib.triangle(i) != 0;
+        }
+        EXPECT_EQ(triangles, 0u);
+        EXPECT_GT(background, 0u);  // some background
+        EXPECT_LT(background, ib.ids.size() / 2);
     }
 }
 
@@ -127,16 +130,16 @@ TEST_P(GlItemBuffer, TheColourPassDrawsTheSameItemBuffer) {
         const ItemBuffer dedicated = raster.render_item_buffer(scene.camera);
         const gl::RasterRenderer::Frame frame = raster.render_with_item_buffer(scene.camera);
         EXPECT_TRUE(frame.shared);
-        EXPECT_TRUE(frame.ids.object == dedicated.object) << scene.objects.size() << " objects";
-        EXPECT_TRUE(frame.ids.prim == dedicated.prim) << scene.objects.size() << " objects";
+        EXPECT_TRUE(frame.ids.same_objects(dedicated)) << scene.objects.size() << " objects";
         EXPECT_TRUE(frame.image.pixels == plain.pixels) << scene.objects.size() << " objects";
         std::size_t named = 0;
-        for (std::uint32_t id : frame.ids.object) named += id != ItemBuffer::kEmpty;
-        EXPECT_GT(named, frame.ids.object.size() / 20);  // not an empty buffer, equal by chance
+        for (std::size_t i = 0; i < frame.ids.ids.size(); ++i)
+            named += frame.ids.object_id(i) != ItemBuffer::kEmpty;
+        EXPECT_GT(named, frame.ids.ids.size() / 20);  // not an empty buffer, equal by chance
         raster.set_msaa(4);
         const gl::RasterRenderer::Frame multisampled = raster.render_with_item_buffer(scene.camera);
         EXPECT_FALSE(multisampled.shared);
-        EXPECT_TRUE(multisampled.ids.object == dedicated.object);
+        EXPECT_TRUE(multisampled.ids.same_objects(dedicated));
     }
 }
 
@@ -146,8 +149,8 @@ TEST_P(GlItemBuffer, AFrameReadIntoAnEarlierFramesStorageIsTheFreshFrame) {
     const Scene scene(load("whitted.json", 120, 90));
     gl::RasterRenderer raster(scene);
     gl::RasterRenderer::Frame reused;
-    reused.ids.resize(160, 100);
-    std::fill(reused.ids.object.begin(), reused.ids.object.end(), 0xdeadbeefu);
+    reused.ids.resize(160, 100, 0, true);
+    std::fill(reused.ids.ids.begin(), reused.ids.ids.end(), 0xdeadbeefu);
     std::fill(reused.ids.prim.begin(), reused.ids.prim.end(), 0xdeadbeefu);
     reused.image.resize(50, 50);
     for (const auto& [cols, rows] : {std::pair{120, 90}, {40, 30}, {160, 100}, {120, 90}}) {
@@ -157,15 +160,54 @@ TEST_P(GlItemBuffer, AFrameReadIntoAnEarlierFramesStorageIsTheFreshFrame) {
         raster.render_with_item_buffer(camera, reused);
         EXPECT_EQ(reused.ids.width, cols);
         EXPECT_EQ(reused.ids.height, rows);
-        EXPECT_TRUE(reused.ids.object == dedicated.object) << cols << " x " << rows;
-        EXPECT_TRUE(reused.ids.prim == dedicated.prim) << cols << " x " << rows;
+        EXPECT_TRUE(reused.ids.same_objects(dedicated)) << cols << " x " << rows;
         EXPECT_EQ(reused.image.width, cols);
         EXPECT_TRUE(reused.image.pixels == plain.pixels) << cols << " x " << rows;
         raster.render(camera, reused.image);
         EXPECT_TRUE(reused.image.pixels == plain.pixels) << cols << " x " << rows;
         raster.render_item_buffer(camera, reused.ids);
-        EXPECT_TRUE(reused.ids.object == dedicated.object) << cols << " x " << rows;
-        EXPECT_TRUE(reused.ids.prim == dedicated.prim) << cols << " x " << rows;
+        EXPECT_TRUE(reused.ids.same_objects(dedicated)) << cols << " x " << rows;
+    }
+}
+
+// The ids read straight into the caller's storage (llvmpipe's default) are the ids read
+// through the pixel buffer (a GPU's), in every layout, from either pass, into storage
+// that held another layout before.
+TEST_P(GlItemBuffer, IdsReadStraightAreTheIdsReadThroughThePixelBuffer) {
+    using Reads = gl::Framebuffer::IdReads;
+    for (const char* name : {"tutorial.json", "whitted.json", "cornell.json"}) {
+        const Scene scene(load(name, 120, 90));
+        gl::RasterRenderer raster(scene);
+        for (const gl::IdLayout layout :
+             {raster.id_layout(), gl::IdLayout{gl::IdLayout::Kind::kSeparate, 0}}) {
+            raster.set_id_layout(layout);
+            for (const bool shared : {false, true}) {
+                ItemBuffer ids[2];
+                for (const Reads how : {Reads::kPixelBuffer, Reads::kDirect}) {
+                    raster.set_id_reads(how);
+                    ItemBuffer& into = ids[how == Reads::kDirect];
+                    into.resize(7, 3, 5, layout.kind != gl::IdLayout::Kind::kSeparate);
+                    std::fill(into.ids.begin(), into.ids.end(), 0xdeadbeefu);
+                    if (shared) {
+                        gl::RasterRenderer::Frame frame;
+                        frame.ids = std::move(into);
+                        raster.render_with_item_buffer(scene.camera, frame);
+                        into = std::move(frame.ids);
+                    } else {
+                        raster.render_item_buffer(scene.camera, into);
+                    }
+                }
+                const std::string what = std::string(name) + (shared ? ", shared" : "") +
+                                         ", layout " +
+                                         std::to_string(static_cast<int>(layout.kind));
+                EXPECT_EQ(ids[1].prim_bits, ids[0].prim_bits) << what;
+                EXPECT_TRUE(ids[1].ids == ids[0].ids && ids[1].prim == ids[0].prim) << what;
+                std::size_t named = 0;
+                for (std::size_t i = 0; i < ids[1].ids.size(); ++i)
+                    named += ids[1].object_id(i) != ItemBuffer::kEmpty;
+                EXPECT_GT(named, ids[1].ids.size() / 4) << what;  // not two empty buffers
+            }
+        }
     }
 }
 
@@ -227,7 +269,8 @@ TEST_P(GlItemBuffer, PackedIdsReadBackAsTwoTargets) {
         raster.set_id_layout({gl::IdLayout::Kind::kSeparate, 0});
         const ItemBuffer two = raster.render_item_buffer(scene.camera);
         const ItemBuffer two_shared = raster.render_with_item_buffer(scene.camera).ids;
-        EXPECT_TRUE(two.object == two_shared.object && two.prim == two_shared.prim) << name;
+        EXPECT_TRUE(two.ids == two_shared.ids && two.prim == two_shared.prim) << name;
+        EXPECT_EQ(two.prim.size(), two.ids.size()) << name;  // the triangles apart
         for (const gl::IdLayout layout :
              {packed, gl::IdLayout{gl::IdLayout::Kind::kPacked, fewest}}) {
             raster.set_id_layout(layout);
@@ -237,25 +280,28 @@ TEST_P(GlItemBuffer, PackedIdsReadBackAsTwoTargets) {
                 const std::string what = std::string(name) + ", " +
                                          std::to_string(layout.prim_bits) + " bits" +
                                          (shared ? ", shared pass" : "");
-                EXPECT_TRUE(one.object == two.object) << what;
-                std::size_t mesh_pixels = 0, unlike = 0;
-                for (std::size_t i = 0; i < one.object.size(); ++i) {
-                    const std::uint32_t id = one.object[i];
+                EXPECT_TRUE(one.prim.empty()) << what;  // read back packed, as drawn
+                EXPECT_EQ(one.prim_bits, layout.prim_bits) << what;
+                std::size_t mesh_pixels = 0, unlike = 0, objects_unlike = 0;
+                for (std::size_t i = 0; i < one.ids.size(); ++i) {
+                    const std::uint32_t id = one.object_id(i);
+                    objects_unlike += id != two.object_id(i);
                     if (id == ItemBuffer::kEmpty ||
                         !std::holds_alternative<MeshRef>(scene.objects[id - 1].shape))
                         continue;
                     ++mesh_pixels;
-                    unlike += one.prim[i] != two.prim[i];
+                    unlike += one.triangle(i) != two.triangle(i);
                 }
+                EXPECT_EQ(objects_unlike, 0u) << what;
                 EXPECT_GT(mesh_pixels, 200u) << what;
                 EXPECT_EQ(unlike, 0u) << what;
                 if (layout.prim_bits == packed.prim_bits) {
-                    EXPECT_TRUE(one.prim == two.prim) << what;
+                    EXPECT_TRUE(one.same_objects(two)) << what;
                 }
             }
             const gl::Framebuffer& fb = raster.render_item_buffer_to_texture(scene.camera);
             for (const auto& [x, y] : {std::pair{60, 45}, {10, 80}, {100, 20}})
-                EXPECT_EQ(fb.read_id(x, y), two.object[two.index(x, y)])
+                EXPECT_EQ(fb.read_id(x, y), two.object_id(two.index(x, y)))
                     << name << " " << x << "," << y;
         }
     }
@@ -285,15 +331,15 @@ TEST_P(GlItemBuffer, TheItemViewShowsPackedIdsAsTheirObjects) {
         palette.push_back({srgb_encode(c.x), srgb_encode(c.y), srgb_encode(c.z)});
     }
     std::size_t wrong = 0, objects = 0;
-    for (std::size_t i = 0; i < ids.object.size(); ++i) {
+    for (std::size_t i = 0; i < ids.ids.size(); ++i) {
         const auto nearest = std::min_element(palette.begin(), palette.end(), [&](vec3 a, vec3 b) {
             return glm::length(a - shown.pixels[i]) < glm::length(b - shown.pixels[i]);
         });
-        wrong += static_cast<std::uint32_t>(nearest - palette.begin()) != ids.object[i];
-        objects += ids.object[i] != ItemBuffer::kEmpty;
+        wrong += static_cast<std::uint32_t>(nearest - palette.begin()) != ids.object_id(i);
+        objects += ids.object_id(i) != ItemBuffer::kEmpty;
     }
     EXPECT_EQ(wrong, 0u);
-    EXPECT_GT(objects, ids.object.size() / 4);
+    EXPECT_GT(objects, ids.ids.size() / 4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Headless, GlItemBuffer, kBackends, backend_name);

@@ -93,7 +93,7 @@ TEST(ItemBuffer, InteriorMeansTheNeighboursInsideTheImageShareTheId) {
          {std::pair{1, 1}, std::pair{2, 7}, std::pair{9, 6}, std::pair{33, 17}}) {
         ItemBuffer ib(w, h);
         std::uint32_t state = 12345u;
-        for (std::uint32_t& id : ib.object) {
+        for (std::uint32_t& id : ib.ids) {
             state = state * 1664525u + 1013904223u;
             id = (state >> 24) % 7 == 0 ? 2u : 1u;
         }
@@ -106,7 +106,7 @@ TEST(ItemBuffer, InteriorMeansTheNeighboursInsideTheImageShareTheId) {
                         const int nx = x + dx, ny = y + dy;
                         if (dx != 0 && dy != 0) continue;  // a diagonal neighbour
                         if (nx >= 0 && ny >= 0 && nx < w && ny < h)
-                            expected &= ib.object[ib.index(nx, ny)] == ib.object[ib.index(x, y)];
+                            expected &= ib.ids[ib.index(nx, ny)] == ib.ids[ib.index(x, y)];
                     }
                 EXPECT_EQ(ib.interior(x, y), expected) << w << "x" << h << " at " << x << ", " << y;
                 interior += expected;
@@ -123,7 +123,7 @@ TEST(Compare, ItemBufferImageColoursIdsAndLeavesEmptyBlack) {
     ItemBuffer ib;
     ib.width = 2;
     ib.height = 1;
-    ib.object = {ItemBuffer::kEmpty, 7};
+    ib.ids = {ItemBuffer::kEmpty, 7};
     ib.prim = {0, 0};
     const Image image = item_buffer_image(ib);
     EXPECT_EQ(image.at(0, 0), vec3(0.0f));

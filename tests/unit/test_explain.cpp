@@ -24,7 +24,7 @@ ItemBuffer traced_ids(const Scene& scene) {
         for (int x = 0; x < ids.width; ++x) {
             Hit hit;
             if (scene.intersect(scene.camera.ray(x, y), hit))
-                ids.object[ids.index(x, y)] = hit.object + 1;
+                ids.ids[ids.index(x, y)] = hit.object + 1;
         }
     return ids;
 }
@@ -46,8 +46,7 @@ TEST(Explain, TermsSumToTracedMinusRasterAtEveryPixel) {
         const Scene scene(test::shipped_scene(name, 64, 48));
         const Image raster = render(scene, local_only());
         ItemBuffer ids = traced_ids(scene);
-        for (std::size_t i = 0; i < ids.object.size(); i += 7)
-            ids.object[i] = (ids.object[i] + 1) % 3;
+        for (std::size_t i = 0; i < ids.ids.size(); i += 7) ids.ids[i] = (ids.ids[i] + 1) % 3;
         const ExplainMap map = explain(scene, scene.camera, {}, raster, ids);
         const Image traced = render(scene, {});
         ASSERT_FALSE(map.cancelled);
@@ -70,7 +69,7 @@ TEST(Explain, WithoutShadowsReflectionsAndRefractionsOnlyGeometryAndShadingRemai
         const Scene scene(test::shipped_scene(name, 64, 48));
         const Image grey(64, 48);  // black: a raster image unlike the traced one
         ItemBuffer ids = traced_ids(scene);
-        for (std::size_t i = 0; i < ids.object.size(); i += 5) ids.object[i] = 0;
+        for (std::size_t i = 0; i < ids.ids.size(); i += 5) ids.ids[i] = 0;
         const ExplainMap map = explain(scene, scene.camera, local_only(), grey, ids);
         std::size_t shading = 0;
         for (std::size_t i = 0; i < map.cause.size(); ++i) {

@@ -4,6 +4,7 @@
 // run of pixels against the pixel's own, and a frame rendered from a perfect item buffer
 // against the frame traced from scratch. Every comparison is bit for bit.
 #include <gtest/gtest.h>
+#include <bit>
 
 #include <array>
 #include <cmath>
@@ -186,30 +187,49 @@ TEST(ScenePackets, NamedPrimitivesGiveEachRayItsOwnHit) {
     EXPECT_GT(hits, 750 * kW);  // kW rays a packet: 8, or 4 under SSE2
 }
 
-// Small regions of ids, runs of every length from every column, the image's edges too.
+// `ib` (ids and triangles apart) with its triangles packed below the object ids, as the
+// raster's one target holds them where they fit, or with the objects alone (`bits` 0: the
+// triangles dropped, as for a scene without a mesh).
+ItemBuffer packed(const ItemBuffer& ib, int bits) {
+    ItemBuffer out = ib;
+    out.resize(ib.width, ib.height, bits, false);
+    for (std::size_t i = 0; i < ib.ids.size(); ++i) {
+        EXPECT_LT(static_cast<std::uint64_t>(ib.prim[i]), std::uint64_t{1} << bits);
+        out.ids[i] = ib.ids[i] << bits | (bits > 0 ? ib.prim[i] : 0u);
+    }
+    return out;
+}
+
+// Small regions of ids, runs of every length from every column, the image's edges too;
+// the same with triangles of their own packed below the ids (neighbours that name one
+// object but not one triangle are inside the object's region).
 TEST(ItemBuffer, ARunsCheckIsEachPixelsOwn) {
     ItemBuffer ib(37, 11);
     std::mt19937 rng(53);
     for (int round = 0; round < 20; ++round) {
-        for (std::uint32_t& id : ib.object) id = 0;
+        for (std::uint32_t& id : ib.ids) id = 0;
         for (int blob = 0; blob < 6; ++blob) {
             const int x0 = static_cast<int>(rng() % 37), y0 = static_cast<int>(rng() % 11);
             const int w = 1 + static_cast<int>(rng() % 12), h = 1 + static_cast<int>(rng() % 6);
             const std::uint32_t id = 1 + static_cast<std::uint32_t>(rng() % 3);
             for (int y = y0; y < std::min(11, y0 + h); ++y)
-                for (int x = x0; x < std::min(37, x0 + w); ++x) ib.object[ib.index(x, y)] = id;
+                for (int x = x0; x < std::min(37, x0 + w); ++x) ib.ids[ib.index(x, y)] = id;
         }
+        for (std::uint32_t& t : ib.prim) t = static_cast<std::uint32_t>(rng() % 256);
+        const ItemBuffer with_triangles = packed(ib, 8);
         for (int y = 0; y < ib.height; ++y) {
             for (int x = 0; x < ib.width; ++x) {
                 for (int n = 1; n <= 20 && x + n <= ib.width; ++n) {
                     unsigned own = 0, same = 0;
-                    const std::uint32_t id = ib.object[ib.index(x, y)];
+                    const std::uint32_t id = ib.ids[ib.index(x, y)];
                     for (int k = 0; k < n; ++k) {
                         own |= static_cast<unsigned>(ib.interior(x + k, y)) << k;
-                        same |= static_cast<unsigned>(ib.object[ib.index(x + k, y)] == id) << k;
+                        same |= static_cast<unsigned>(ib.ids[ib.index(x + k, y)] == id) << k;
                     }
                     ASSERT_EQ(ib.interior_run(x, y, n), own) << x << "," << y << " n " << n;
-                    ASSERT_EQ(ItemBuffer::same_run(ib.object, ib.index(x, y), n, id), same);
+                    ASSERT_EQ(ib.same_object_run(ib.index(x, y), n, id), same);
+                    ASSERT_EQ(with_triangles.interior_run(x, y, n), own) << x << "," << y;
+                    ASSERT_EQ(with_triangles.same_object_run(ib.index(x, y), n, id), same);
                 }
             }
         }
@@ -224,7 +244,7 @@ ItemBuffer traced_item_buffer(const Scene& scene) {
         for (int x = 0; x < camera.cols; ++x) {
             Hit hit;
             if (!scene.intersect(camera.ray(x, y), hit)) continue;
-            ib.object[ib.index(x, y)] = hit.object + 1;
+            ib.ids[ib.index(x, y)] = hit.object + 1;
             ib.prim[ib.index(x, y)] = hit.prim;
         }
     }
@@ -245,6 +265,19 @@ TEST(ItemBuffer, AFrameFromAPerfectItemBufferIsTheFrameFromScratch) {
         const Image from_scratch = render(scene, options);
         const Image with = render(scene, options, &with_stats, {}, {}, &ib);
         EXPECT_EQ(with.pixels, from_scratch.pixels) << name;
+        // The layouts the raster reads back (gl::IdLayout): the triangles packed below the
+        // ids, in the bits the ids leave, where the scene has a mesh; the objects alone
+        // where it has none.
+        bool meshes = false;
+        for (const Object& o : scene.objects) meshes |= std::holds_alternative<MeshRef>(o.shape);
+        const int bits = meshes ? 32 - static_cast<int>(std::bit_width(scene.objects.size())) : 0;
+        const ItemBuffer as_read = packed(ib, bits);
+        RenderStats packed_stats;
+        const Image from_packed = render(scene, options, &packed_stats, {}, {}, &as_read);
+        EXPECT_EQ(from_packed.pixels, from_scratch.pixels) << name << " packed";
+        // The same pixels settled by what they name (a wrong triangle would miss, and its
+        // pixel would still be found, through the objects around it).
+        EXPECT_EQ(packed_stats.item_buffer_fallbacks, with_stats.item_buffer_fallbacks) << name;
         EXPECT_LT(with_stats.item_buffer_fallbacks, camera.cols * camera.rows * 3 / 4) << name;
         EXPECT_GT(with_stats.item_buffer_fallbacks, 0u) << name;
     }
@@ -264,8 +297,7 @@ TEST(ItemBuffer, AnEdgePixelFindsTheObjectNamedNextToIt) {
         ItemBuffer blanked = perfect;
         for (int y = 0; y < camera.rows; ++y)
             for (int x = 0; x < camera.cols; ++x)
-                if (!perfect.interior(x, y))
-                    blanked.object[blanked.index(x, y)] = ItemBuffer::kEmpty;
+                if (!perfect.interior(x, y)) blanked.ids[blanked.index(x, y)] = ItemBuffer::kEmpty;
         RenderOptions options;
         options.threads = 2;
         const Image from_scratch = render(scene, options);
@@ -273,7 +305,7 @@ TEST(ItemBuffer, AnEdgePixelFindsTheObjectNamedNextToIt) {
         int edges = 0;
         for (int y = 0; y < camera.rows; ++y) {
             for (int x = 0; x < camera.cols; ++x) {
-                const std::uint32_t id = perfect.object[perfect.index(x, y)];
+                const std::uint32_t id = perfect.object_id(perfect.index(x, y));
                 if (perfect.interior(x, y) || blanked.interior(x, y) || id == ItemBuffer::kEmpty)
                     continue;
                 bool named = false;
@@ -281,7 +313,7 @@ TEST(ItemBuffer, AnEdgePixelFindsTheObjectNamedNextToIt) {
                     for (int dx = -1; dx <= 1; ++dx)
                         if (x + dx >= 0 && y + dy >= 0 && x + dx < camera.cols &&
                             y + dy < camera.rows)
-                            named |= blanked.object[blanked.index(x + dx, y + dy)] == id;
+                            named |= blanked.ids[blanked.index(x + dx, y + dy)] == id;
                 if (!named) continue;
                 ++edges;
                 ASSERT_EQ(with.at(x, y), from_scratch.at(x, y)) << name << " " << x << "," << y;
@@ -318,11 +350,11 @@ TEST(ItemBuffer, APixelWhoseNamedObjectMissesStillMeetsTheMeshAroundIt) {
     const Image from_scratch = render(scene, options);
     for (const int x : {28, 36}) {  // inside runs of eight (24 .. 31, 32 .. 39)
         const int y = 24;
-        ASSERT_EQ(ib.object[ib.index(x, y)], kBox);
+        ASSERT_EQ(ib.ids[ib.index(x, y)], kBox);
         ItemBuffer named = ib;
         for (const auto& [dx, dy] : {std::pair{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}})
-            named.object[named.index(x + dx, y + dy)] = kBall;
-        named.object[named.index(x + 3, y)] = kFloor;
+            named.ids[named.index(x + dx, y + dy)] = kBall;
+        named.ids[named.index(x + 3, y)] = kFloor;
         const Image with = render(scene, options, nullptr, {}, {}, &named);
         EXPECT_EQ(with.at(x, y), from_scratch.at(x, y)) << x;
         Hit floor;
@@ -359,7 +391,7 @@ TEST(ItemBuffer, AnObjectTooSmallForTheRasterIsFoundWhereItLies) {
     ItemBuffer ib = traced_item_buffer(missed);
     const ItemBuffer perfect = traced_item_buffer(scene);
     int speck_pixels = 0;
-    for (std::size_t i = 0; i < perfect.object.size(); ++i) speck_pixels += perfect.object[i] > 2;
+    for (std::size_t i = 0; i < perfect.ids.size(); ++i) speck_pixels += perfect.ids[i] > 2;
     EXPECT_GT(speck_pixels, 10);
     RenderOptions options;
     options.threads = 2;
