@@ -74,7 +74,8 @@ class Framebuffer {
     enum class IdReads { kAuto, kPixelBuffer, kDirect };
     class ItemBufferRead {
       public:
-        ItemBuffer finish();            // waits for the copy, then maps the buffer
+        // Waits for the copy and maps the buffer, or (read straight) reads the ids now.
+        ItemBuffer finish();
         void finish(ItemBuffer& into);  // into's storage reused (ItemBuffer::resize)
 
       private:
