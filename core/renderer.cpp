@@ -124,9 +124,9 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
     }
 }
 
-// The objects too small for the raster (core/small_objects.h) that lie over pixels
-// x .. x + n - 1 of row y: their pixels are not settled by the ids, but tested against
-// them besides what is named around.
+// The objects too small for the raster, and the spheres cut by the image's edge along it
+// (core/small_objects.h), that lie over pixels x .. x + n - 1 of row y: their pixels are
+// not settled by the ids, but tested against them besides what is named around.
 struct TinyOver {
     std::array<std::uint32_t, 4 * kPacketWidth> objects;
     int count = 0;
@@ -134,17 +134,21 @@ struct TinyOver {
     bool crowd = false;  // more than `objects` holds: the whole scene for those pixels
 };
 
-TinyOver tiny_over(const SmallObjects& small, int x, int y, int n) {
+TinyOver tiny_over(const SmallObjects& small, int x, int y, int n, int width) {
     TinyOver tiny;
-    for (const SmallObjects::Span& s : small.row(y)) {
-        const int lo = std::max(s.x0, x) - x, hi = std::min(s.x1, x + n - 1) - x;
-        if (lo > hi) continue;
-        tiny.lanes |= ((2u << hi) - 1u) & ~((1u << lo) - 1u);
-        if (tiny.count < static_cast<int>(tiny.objects.size()))
-            tiny.objects[tiny.count++] = s.object;
-        else
-            tiny.crowd = true;
-    }
+    const auto take = [&](std::span<const SmallObjects::Span> spans) {
+        for (const SmallObjects::Span& s : spans) {
+            const int lo = std::max(s.x0, x) - x, hi = std::min(s.x1, x + n - 1) - x;
+            if (lo > hi) continue;
+            tiny.lanes |= ((2u << hi) - 1u) & ~((1u << lo) - 1u);
+            if (tiny.count < static_cast<int>(tiny.objects.size()))
+                tiny.objects[tiny.count++] = s.object;
+            else
+                tiny.crowd = true;
+        }
+    };
+    take(small.row(y));
+    if (x == 0 || x + n == width) take(small.side(y));  // a run at the image's side
     return tiny;
 }
 
@@ -202,7 +206,7 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects
     reset_hits(hits, static_cast<std::size_t>(n));
     const std::size_t at = ib.index(x, y);
     const unsigned interior = ib.interior_run(x, y, n);
-    const TinyOver tiny = tiny_over(small, x, y, n);
+    const TinyOver tiny = tiny_over(small, x, y, n, ib.width);
     const bool whole = interior == all;
     unsigned left = 0;  // inside the region of a sphere, plane or triangle, not yet tested
     const unsigned settled =

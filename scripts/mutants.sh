@@ -707,6 +707,36 @@ mutant small-objects-none-small-enough core/small_objects.h \
     'static constexpr float kPixels = 6.0f;' 'static constexpr float kPixels = 1.0f;' \
     rt_tests $(unit 'ItemBuffer.*')
 
+# Spheres cut by the image's edge: tested along it, on each side, where they reach in
+# by little.
+mutant edge-spheres-not-listed core/small_objects.cpp \
+    'edge_patches(i, exact ? exact : b, exact.has_value(), camera, patches, sides);' '{}' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant edge-spheres-right-side-left-out core/small_objects.cpp \
+    'if (b->x_hi > cols && b->x_lo > cols - reach) sides.push_back({object, last_x, last_x, y0, y1});' \
+    '' rt_tests $(unit 'ItemBuffer.*')
+mutant edge-spheres-left-side-left-out core/small_objects.cpp \
+    'if (b->x_lo < 0.0f && b->x_hi < reach) sides.push_back({object, 0, 0, y0, y1});' '' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant edge-spheres-bottom-left-out core/small_objects.cpp \
+    'if (b->y_lo < 0.0f && b->y_hi < reach) rows.push_back({object, x0, x1, 0, 0});' '' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant edge-spheres-top-left-out core/small_objects.cpp \
+    'rows.push_back({object, x0, x1, last_y, last_y});' '{}' rt_tests $(unit 'ItemBuffer.*')
+mutant edge-spheres-one-column-in core/small_objects.cpp \
+    'sides.push_back({object, last_x, last_x, y0, y1});' \
+    'sides.push_back({object, last_x - 1, last_x - 1, y0, y1});' rt_tests $(unit 'ItemBuffer.*')
+mutant edge-spheres-reach-too-short core/small_objects.cpp \
+    'const float reach = exact ? 2.0f : INFINITY;' 'const float reach = exact ? 0.5f : INFINITY;' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant edge-spheres-box-too-narrow core/small_objects.cpp \
+    'const double t_lo = (across * z - root) / k, t_hi = (across * z + root) / k;' \
+    'const double t_lo = (across * z - 0.5 * root) / k, t_hi = (across * z + 0.5 * root) / k;' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant edge-spheres-right-side-not-read core/renderer.cpp \
+    'if (x == 0 || x + n == width) take(small.side(y));' 'if (x == 0) take(small.side(y));' \
+    rt_tests $(unit 'ItemBuffer.*')
+
 # A build's large arrays (core/large_array.cpp): on huge-page boundaries, kept when freed,
 # within a bound, and only for an array of about their size.
 mutant large-array-not-aligned core/large_array.cpp \

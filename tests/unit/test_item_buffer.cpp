@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -401,6 +402,66 @@ TEST(ItemBuffer, AnObjectTooSmallForTheRasterIsFoundWhereItLies) {
     for (std::size_t i = 0; i < with.pixels.size(); ++i)
         differ += with.pixels[i] != from_scratch.pixels[i];
     EXPECT_EQ(differ, 0);
+}
+
+// A sphere cut by the image's edge may reach into the outermost column or row by less than
+// the raster's quarter pixel: no pixel of the image names it, and the pixels it covers
+// there have no neighbour beyond the edge to put them on an edge (many_spheres: two pixels
+// of its right-hand column). Here, on each side in turn, the sphere comes in from afar
+// until it covers pixels of the outermost column or row but none of the next, and the
+// item buffer is a perfect one of the scene without it, as if the raster had missed it:
+// the frame must still be the frame from scratch.
+TEST(ItemBuffer, ASphereCutByTheImagesEdgeIsFoundAlongIt) {
+    const auto scene_with = [](vec3 centre, bool with_sphere) {
+        SceneDescription d;
+        d.materials.emplace_back();
+        d.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -4}, 0, {}});
+        if (with_sphere) d.objects.push_back(Object{"ball", Sphere{centre, 1.0f}, 0, {}});
+        d.lights.push_back(Light{Light::Type::kPoint, {3, 6, 6}, {0, -1, 0}, vec3(1.0f)});
+        d.camera = Camera::look_at({0, 0, 9}, {0, 0, 0}, {0, 1, 0}, 45.0f, 64, 48);
+        return std::make_unique<Scene>(std::move(d));
+    };
+    // The ball's pixels in column (or row) `at` of the image.
+    const auto ball_pixels = [](const ItemBuffer& ib, bool column, int at) {
+        int n = 0;
+        for (int k = 0; k < (column ? ib.height : ib.width); ++k)
+            n += ib.object_id(column ? ib.index(at, k) : ib.index(k, at)) == 2;
+        return n;
+    };
+    struct Side {
+        const char* name;
+        // Far out, beyond the side (and off the horizon, where the floor's pixels and the
+        // sky's would put the ball's on an edge).
+        vec3 from;
+        bool column;  // a side column, or the top or bottom row
+        int outermost, next;
+    };
+    const Side sides[] = {{"right", {8, 1.5f, 0}, true, 63, 62},  // above the horizon
+                          {"left", {-8, 1.5f, 0}, true, 0, 1},
+                          {"top", {0, 6, 0}, false, 47, 46},
+                          {"bottom", {0, -6, 0}, false, 0, 1}};
+    RenderOptions options;
+    options.threads = 2;
+    for (const Side& side : sides) {
+        vec3 centre = side.from;
+        const vec3 step = -0.002f * glm::normalize(side.from);
+        std::unique_ptr<Scene> scene;
+        for (int k = 0; k < 2000; ++k, centre += step) {
+            scene = scene_with(centre, true);
+            if (ball_pixels(traced_item_buffer(*scene), side.column, side.outermost) > 0) break;
+        }
+        const ItemBuffer perfect = traced_item_buffer(*scene);
+        const int pixels = ball_pixels(perfect, side.column, side.outermost);
+        ASSERT_GT(pixels, 0) << side.name << ": the ball never reaches the image";
+        ASSERT_EQ(ball_pixels(perfect, side.column, side.next), 0) << side.name;
+        ItemBuffer ib = traced_item_buffer(*scene_with(centre, false));  // named nowhere
+        const Image from_scratch = render(*scene, options);
+        const Image with = render(*scene, options, nullptr, {}, {}, &ib);
+        int differ = 0;
+        for (std::size_t i = 0; i < with.pixels.size(); ++i)
+            differ += with.pixels[i] != from_scratch.pixels[i];
+        EXPECT_EQ(differ, 0) << side.name << ": of " << pixels << " pixels of the ball";
+    }
 }
 
 }  // namespace
