@@ -24,6 +24,10 @@ struct Aabb {
         hi = glm::max(hi, b.hi);
     }
     vec3 centre() const { return 0.5f * (lo + hi); }
+    // Corner i (0 .. 7): bit 0 picks hi.x over lo.x, bit 1 hi.y, bit 2 hi.z.
+    vec3 corner(int i) const {
+        return {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
+    }
     vec3 extent() const { return hi - lo; }
     float half_area() const {
         const vec3 e = extent();
@@ -36,11 +40,7 @@ struct Aabb {
 inline Aabb Aabb::transformed(const glm::mat4& m) const {
     Aabb out;
     if (empty()) return out;
-    for (int corner = 0; corner < 8; ++corner) {
-        const vec3 p{(corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
-                     (corner & 4) ? hi.z : lo.z};
-        out.grow(vec3(m * glm::vec4(p, 1.0f)));
-    }
+    for (int i = 0; i < 8; ++i) out.grow(vec3(m * glm::vec4(corner(i), 1.0f)));
     return out;
 }
 

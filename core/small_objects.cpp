@@ -19,9 +19,7 @@ struct PixelBox {
 std::optional<PixelBox> pixel_box(const Aabb& box, const Camera& c) {
     PixelBox b{INFINITY, -INFINITY, INFINITY, -INFINITY};
     for (int corner = 0; corner < 8; ++corner) {
-        const vec3 p{corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y,
-                     corner & 4 ? box.hi.z : box.lo.z};
-        const vec3 d = p - c.eye;
+        const vec3 d = box.corner(corner) - c.eye;
         const float depth = -glm::dot(d, c.n);
         if (!(depth > 0.0f)) return std::nullopt;
         const float a = glm::dot(d, c.u) * c.N / (depth * c.W);  // 2 px / cols - 1
@@ -104,11 +102,8 @@ std::optional<PixelBox> sphere_box(const Sphere& s, const Camera& c) {
 
 // True when every corner of the box is behind the eye (or on its plane).
 bool behind(const Aabb& box, const Camera& camera) {
-    for (int corner = 0; corner < 8; ++corner) {
-        const vec3 p{corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y,
-                     corner & 4 ? box.hi.z : box.lo.z};
-        if (glm::dot(camera.eye - p, camera.n) > 0.0f) return false;
-    }
+    for (int corner = 0; corner < 8; ++corner)
+        if (glm::dot(camera.eye - box.corner(corner), camera.n) > 0.0f) return false;
     return true;
 }
 

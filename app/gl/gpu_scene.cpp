@@ -47,9 +47,7 @@ float max_scale(const glm::mat4& m) {
 bool box_in_view(const Aabb& box, const glm::mat4& view_projection) {
     unsigned outside_all = 0x1fu;  // x < -w, x > w, y < -w, y > w, z < -w
     for (int corner = 0; corner < 8 && outside_all != 0; ++corner) {
-        const glm::vec3 p((corner & 1) ? box.hi.x : box.lo.x, (corner & 2) ? box.hi.y : box.lo.y,
-                          (corner & 4) ? box.hi.z : box.lo.z);
-        const glm::vec4 c = view_projection * glm::vec4(p, 1.0f);
+        const glm::vec4 c = view_projection * glm::vec4(box.corner(corner), 1.0f);
         const auto beyond = [&](float a, float b) {  // a > b, with a margin for rounding
             return a - b > 1e-4f * (std::fabs(a) + std::fabs(b));
         };

@@ -101,9 +101,7 @@ TEST(Obj, BareObjSceneIsFramedAndLit) {
     const Aabb b = s.bounds();
     const glm::mat4 clip = s.camera.projection(1e4f) * s.camera.view();
     for (int corner = 0; corner < 8; ++corner) {
-        const vec3 p{(corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y,
-                     (corner & 4) ? b.hi.z : b.lo.z};
-        const glm::vec4 c = clip * glm::vec4(p, 1.0f);
+        const glm::vec4 c = clip * glm::vec4(b.corner(corner), 1.0f);
         EXPECT_LT(std::fabs(c.x / c.w), 1.0f) << corner;
         EXPECT_LT(std::fabs(c.y / c.w), 1.0f) << corner;
     }
