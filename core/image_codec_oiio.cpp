@@ -42,6 +42,16 @@ class QuietStderr {
     int saved_ = -1;
 };
 
+// rtview's images are a frame or a texture, read or written once: OpenImageIO and
+// OpenEXR do that work on the calling thread. Left to themselves they start pools of
+// threads of their own for it (two more for one small EXR file here), which then end
+// only while the process exits. Set when the module is opened, before its first call.
+[[maybe_unused]] const bool kOnTheCallersThread = [] {
+    OIIO::attribute("threads", 1);
+    OIIO::attribute("exr_threads", -1);  // -1: no OpenEXR thread pool at all
+    return true;
+}();
+
 // OpenImageIO's messages may run over several lines; the last says what went wrong.
 std::string last_line(std::string message) {
     while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
