@@ -107,12 +107,12 @@ inline float hmax(Float4 v) {
 }
 #if defined(__AVX__)
 inline float hmin(Float8 v) {
-    return hmin(vmin(__builtin_shufflevector(v, v, 0, 1, 2, 3),
-                     __builtin_shufflevector(v, v, 4, 5, 6, 7)));
+    return hmin(
+        vmin(__builtin_shufflevector(v, v, 0, 1, 2, 3), __builtin_shufflevector(v, v, 4, 5, 6, 7)));
 }
 inline float hmax(Float8 v) {
-    return hmax(vmax(__builtin_shufflevector(v, v, 0, 1, 2, 3),
-                     __builtin_shufflevector(v, v, 4, 5, 6, 7)));
+    return hmax(
+        vmax(__builtin_shufflevector(v, v, 0, 1, 2, 3), __builtin_shufflevector(v, v, 4, 5, 6, 7)));
 }
 #endif
 

@@ -86,7 +86,8 @@ TEST(Simd, TheSmallestAndLargestLaneAreFoundInAnyLane) {
     using Float = Lanes<kPacketWidth>::Float;
     for (int at = 0; at < kPacketWidth; ++at) {
         Float v;
-        for (int lane = 0; lane < kPacketWidth; ++lane) v[lane] = 1.0f + 0.25f * static_cast<float>(lane);
+        for (int lane = 0; lane < kPacketWidth; ++lane)
+            v[lane] = 1.0f + 0.25f * static_cast<float>(lane);
         v[at] = -3.5f;
         EXPECT_EQ(hmin(v), -3.5f) << "lane " << at;
         v[at] = 7.25f;
