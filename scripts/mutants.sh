@@ -95,6 +95,11 @@ mutant image-io-exr-rows-not-flipped core/image_io.cpp \
 mutant image-io-png-write-error-unsaid core/png_file.cpp \
     'if (write_error) return' 'if (false && write_error) return' \
     rt_tests $(unit 'Image.*')
+# The codec's EXR work on the caller's thread; the test alone, in its own process (as CTest
+# runs it): an earlier EXR in the same process would have started OpenEXR's pool already.
+mutant image-io-exr-thread-pool core/image_codec_oiio.cpp \
+    'OIIO::attribute("exr_threads", -1);' 'OIIO::attribute("exr_threads", 0);' \
+    rt_tests $(unit 'Image.ExrIsReadAndWrittenOnTheCallersThread')
 # PNG textures read by libpng as OpenImageIO read them (Texture.PngFilesReadAsTheCodecReadsThem).
 mutant png-read-16-bits-cut core/png_file.cpp \
     'return static_cast<std::uint8_t>((v * 255u + 32767u) / 65535u);' \
