@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -33,6 +34,16 @@ std::optional<PixelBox> pixel_box(const Aabb& box, const Camera& c) {
     return b;
 }
 
+// The pixels whose centres (pixel x's at x + 1/2) lie in [lo, hi], and one more each side,
+// within 0 .. last: {first, last}, first > last where none. The bounds are clamped as
+// floats first: a box seen from just in front of it projects past what an int holds.
+std::pair<int, int> pixel_span(float lo, float hi, int last) {
+    const float below = -2.0f, above = static_cast<float>(last) + 2.0f;
+    const int first = static_cast<int>(std::ceil(std::clamp(lo - 0.5f, below, above))) - 1;
+    const int end = static_cast<int>(std::floor(std::clamp(hi - 0.5f, below, above))) + 1;
+    return {std::max(0, first), std::min(last, end)};
+}
+
 }  // namespace
 
 namespace {
@@ -61,10 +72,8 @@ void edge_patches(std::uint32_t object, const std::optional<PixelBox>& b, bool e
         rows.push_back({object, 0, last_x, last_y, last_y});
         return;
     }
-    const int x0 = std::max(0, static_cast<int>(std::ceil(b->x_lo - 0.5f)) - 1);
-    const int x1 = std::min(last_x, static_cast<int>(std::floor(b->x_hi - 0.5f)) + 1);
-    const int y0 = std::max(0, static_cast<int>(std::ceil(b->y_lo - 0.5f)) - 1);
-    const int y1 = std::min(last_y, static_cast<int>(std::floor(b->y_hi - 0.5f)) + 1);
+    const auto [x0, x1] = pixel_span(b->x_lo, b->x_hi, last_x);
+    const auto [y0, y1] = pixel_span(b->y_lo, b->y_hi, last_y);
     if (x0 > x1 || y0 > y1) return;  // off the image
     const float cols = static_cast<float>(camera.cols), height = static_cast<float>(camera.rows);
     const float reach = exact ? 2.0f : INFINITY;  // how far in a sphere may reach
@@ -140,12 +149,8 @@ SmallObjects::SmallObjects(const Scene& scene, const Camera& camera) {
             }
             continue;
         }
-        // Pixel x's centre is at x + 1/2: the columns whose centres the box holds, and one
-        // more each side.
-        const int x0 = std::max(0, static_cast<int>(std::ceil(b->x_lo - 0.5f)) - 1);
-        const int x1 = std::min(camera.cols - 1, static_cast<int>(std::floor(b->x_hi - 0.5f)) + 1);
-        const int y0 = std::max(0, static_cast<int>(std::ceil(b->y_lo - 0.5f)) - 1);
-        const int y1 = std::min(camera.rows - 1, static_cast<int>(std::floor(b->y_hi - 0.5f)) + 1);
+        const auto [x0, x1] = pixel_span(b->x_lo, b->x_hi, camera.cols - 1);
+        const auto [y0, y1] = pixel_span(b->y_lo, b->y_hi, camera.rows - 1);
         if (x0 > x1 || y0 > y1) continue;  // off the image
         patches.push_back({i, x0, x1, y0, y1});
         ++objects_;

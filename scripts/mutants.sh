@@ -738,6 +738,10 @@ mutant edge-spheres-box-too-narrow core/small_objects.cpp \
     'const double t_lo = (across * z - root) / k, t_hi = (across * z + root) / k;' \
     'const double t_lo = (across * z - 0.5 * root) / k, t_hi = (across * z + 0.5 * root) / k;' \
     rt_tests $(unit 'ItemBuffer.*')
+# A box projected from just in front of the eye's plane (ItemBuffer.ASphereSeenFromJust...).
+mutant small-objects-span-unclamped core/small_objects.cpp \
+    'std::ceil(std::clamp(lo - 0.5f, below, above))' 'std::ceil(lo - 0.5f)' \
+    rt_tests $(unit 'ItemBuffer.*')
 mutant edge-spheres-right-side-not-read core/renderer.cpp \
     'if (x == 0 || x + n == width) take(small.side(y));' 'if (x == 0) take(small.side(y));' \
     rt_tests $(unit 'ItemBuffer.*')

@@ -6,11 +6,13 @@
 #include <gtest/gtest.h>
 #include <bit>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
 #include <memory>
 #include <random>
+#include <span>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -462,6 +464,28 @@ TEST(ItemBuffer, ASphereCutByTheImagesEdgeIsFoundAlongIt) {
             differ += with.pixels[i] != from_scratch.pixels[i];
         EXPECT_EQ(differ, 0) << side.name << ": of " << pixels << " pixels of the ball";
     }
+}
+
+// A box seen from just in front of it (a corner 1e-30 before the eye's plane) projects
+// some 1e33 pixels out: past what an int holds. A sphere under a transform (listed by its
+// box) across the whole image so must be listed along every side, its span clamped, not
+// cast from such a float (undefined; on x86 it wrapped to no pixels at all).
+TEST(ItemBuffer, ASphereSeenFromJustInFrontOfItsBoxIsListedAlongTheEdges) {
+    SceneDescription d;
+    d.materials.emplace_back();
+    // Its box spans x -1.5 .. 0.5, y -1 .. 1, z -2 .. 0; the eye sits 1e-30 in front of z 0.
+    d.objects.push_back(Object{"ball", Sphere{{-0.5f, 0.0f, -1.0f}, 1.0f}, 0,
+                               Transform::from_matrix(glm::mat4(1.0f))});
+    d.camera = Camera::look_at({0, 0, 1e-30f}, {0, 0, -1}, {0, 1, 0}, 45.0f, 64, 48);
+    const Scene scene(std::move(d));
+    const SmallObjects small(scene, scene.camera);
+    const auto lists_ball = [](std::span<const SmallObjects::Span> spans) {
+        return std::any_of(spans.begin(), spans.end(),
+                           [](const SmallObjects::Span& s) { return s.object == 0; });
+    };
+    for (int y = 0; y < 48; ++y) EXPECT_TRUE(lists_ball(small.side(y))) << "row " << y;
+    EXPECT_TRUE(lists_ball(small.row(0)));
+    EXPECT_TRUE(lists_ball(small.row(47)));
 }
 
 }  // namespace
