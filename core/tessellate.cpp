@@ -38,7 +38,9 @@ TriangleMesh tessellate_unit_sphere(int segments) {
 int sphere_segments_for(float radius_pixels) {
     if (!(radius_pixels > 0.25f)) return 12;
     const float n = std::numbers::pi_v<float> / std::acos(1.0f - 0.25f / radius_pixels);
-    return std::clamp(static_cast<int>(std::ceil(n)), 12, 256);
+    // Beyond some 8e6 pixels the cosine rounds to 1 and n to infinity: clamped as a float,
+    // before the cast (infinity cast to int is undefined).
+    return static_cast<int>(std::ceil(std::clamp(n, 12.0f, 256.0f)));
 }
 
 float projected_radius_pixels(const Camera& camera, const vec3& centre, float radius) {

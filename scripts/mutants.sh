@@ -738,6 +738,11 @@ mutant edge-spheres-box-too-narrow core/small_objects.cpp \
     'const double t_lo = (across * z - root) / k, t_hi = (across * z + root) / k;' \
     'const double t_lo = (across * z - 0.5 * root) / k, t_hi = (across * z + 0.5 * root) / k;' \
     rt_tests $(unit 'ItemBuffer.*')
+# The raster's sphere of a sphere millions of pixels wide (core/tessellate.cpp).
+mutant sphere-segments-cast-unclamped core/tessellate.cpp \
+    'return static_cast<int>(std::ceil(std::clamp(n, 12.0f, 256.0f)));' \
+    'return std::clamp(static_cast<int>(std::ceil(n)), 12, 256);' \
+    rt_tests $(unit 'Far.ASphereThatLooksMillionsOfPixelsWideGetsTheFinestMesh')
 # A box projected from just in front of the eye's plane (ItemBuffer.ASphereSeenFromJust...).
 mutant small-objects-span-unclamped core/small_objects.cpp \
     'std::ceil(std::clamp(lo - 0.5f, below, above))' 'std::ceil(lo - 0.5f)' \

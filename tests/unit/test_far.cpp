@@ -13,6 +13,7 @@
 #include "core/compare.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
+#include "core/tessellate.h"
 #include "core/wide_bvh.h"
 #include "far_scene.h"
 #include "test_util.h"
@@ -250,6 +251,29 @@ void expect_non_finite_rays_miss() {
         }));
         EXPECT_EQ(visits, 0);
     }
+}
+
+// The raster's sphere is finer the larger it looks, up to 256 segments. A sphere that
+// looks some 1e7 pixels or more across (a planet through a telephoto lens) has its
+// quarter-pixel arc's angle round to 0 and the count to infinity: it must still get the
+// finest mesh (the cast of infinity to int was undefined and gave x86's INT_MIN, clamped
+// to the coarsest, 12 segments: a polygon hundreds of metres inside the surface).
+TEST(Far, ASphereThatLooksMillionsOfPixelsWideGetsTheFinestMesh) {
+    int previous = 0;
+    for (const float pixels : {0.0f, 0.3f, 1.0f, 10.0f, 100.0f, 1e3f, 1e4f, 1e6f, 1e7f, 1e8f, 1e12f,
+                               1e30f, std::numeric_limits<float>::infinity()}) {
+        const int segments = sphere_segments_for(pixels);
+        EXPECT_GE(segments, previous) << pixels;  // never coarser for a larger sphere
+        EXPECT_GE(segments, 12) << pixels;
+        EXPECT_LE(segments, 256) << pixels;
+        previous = segments;
+    }
+    EXPECT_EQ(sphere_segments_for(1e8f), 256);
+    // A 10 km ball 150 m away through a lens of 0.1 degrees: 2.7e7 pixels.
+    const Camera camera = Camera::look_at({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 0.1f, 1280, 720);
+    const float pixels = projected_radius_pixels(camera, {0, 0, -10150.0f}, 1e4f);
+    EXPECT_GT(pixels, 1e7f);
+    EXPECT_EQ(sphere_segments_for(pixels), 256);
 }
 
 TEST(Far, NonFiniteRaysEnterNoBox) {
