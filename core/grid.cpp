@@ -22,16 +22,18 @@ void UniformGrid::build(std::span<const Aabb> boxes) {
     extent = bounds_.extent();
     const float cells = kCellsPerPrimitive * static_cast<float>(boxes.size());
     const float per_unit = std::cbrt(cells / (extent.x * extent.y * extent.z));
-    for (int a = 0; a < 3; ++a)
-        res_[a] = std::clamp(static_cast<int>(std::ceil(extent[a] * per_unit)), 1, 512);
+    for (int a = 0; a < 3; ++a) {
+        // Clamped as a float: primitives at one point make the volume underflow to 0 and
+        // per_unit infinite (infinity or NaN cast to int is undefined).
+        const float wanted = extent[a] * per_unit;
+        res_[a] = wanted >= 512.0f ? 512 : wanted > 1.0f ? static_cast<int>(std::ceil(wanted)) : 1;
+    }
     cell_size_ = extent / vec3(res_);
 
     const auto cell_range = [&](const Aabb& b, glm::ivec3& lo, glm::ivec3& hi) {
         for (int a = 0; a < 3; ++a) {
-            lo[a] = std::clamp(static_cast<int>((b.lo[a] - bounds_.lo[a]) / cell_size_[a]), 0,
-                               res_[a] - 1);
-            hi[a] = std::clamp(static_cast<int>((b.hi[a] - bounds_.lo[a]) / cell_size_[a]), 0,
-                               res_[a] - 1);
+            lo[a] = cell_along(a, b.lo[a] - bounds_.lo[a]);
+            hi[a] = cell_along(a, b.hi[a] - bounds_.lo[a]);
         }
     };
     // Two passes: count each cell's primitives, then place them (a compressed list).

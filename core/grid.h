@@ -31,6 +31,14 @@ class UniformGrid {
     std::size_t cell_index(const glm::ivec3& c) const {
         return (static_cast<std::size_t>(c.z) * res_.y + c.y) * res_.x + c.x;
     }
+    // The cell along axis a of a point `offset` past the bounds' low corner, clamped to
+    // the grid as a float: a cell size of 0 (primitives at one point, far out) makes NaN,
+    // and a cast of NaN or of a float past an int's range is undefined. NaN: cell 0.
+    int cell_along(int a, float offset) const {
+        const float at = offset / cell_size_[a];
+        const int last = res_[a] - 1;
+        return at >= static_cast<float>(last) ? last : at > 0.0f ? static_cast<int>(at) : 0;
+    }
 
     Aabb bounds_;
     glm::ivec3 res_{0};
@@ -50,8 +58,7 @@ bool UniformGrid::traverse(const Ray& ray, float& t_max, HitPrim&& hit) const {
     glm::ivec3 cell, step;
     vec3 t_next, t_delta;
     for (int a = 0; a < 3; ++a) {
-        cell[a] = std::clamp(static_cast<int>((start[a] - bounds_.lo[a]) / cell_size_[a]), 0,
-                             res_[a] - 1);
+        cell[a] = cell_along(a, start[a] - bounds_.lo[a]);
         if (ray.dir[a] > 0.0f) {
             step[a] = 1;
             t_next[a] =

@@ -248,7 +248,7 @@ void LightBuffer::cells(const RayLanes<kPacketWidth>& feelers, unsigned lanes, C
     const auto valid = (w > splat<Float>(0.0f)) & (w < splat<Float>(kInfinity));
     const Float scale = splat<Float>(0.5f * kCells) / w;
     // clamp(int(t), 0, kCells - 1) as floats: floor and truncation agree once clamped
-    // below at 0, and a NaN (max takes its second operand then) becomes 0 as int() does.
+    // below at 0, and a NaN (max takes its second operand then) becomes 0, as in cell().
     const auto index = [&](Float t) {
         const Float i = vfloor(t * scale + splat<Float>(0.5f * kCells));
         return vmin(vmax(i, splat<Float>(0.0f)), splat<Float>(kCells - 1.0f));

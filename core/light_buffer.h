@@ -116,8 +116,13 @@ inline LightBuffer::Cell LightBuffer::cell(const vec3& origin) const {
     }
     if (!(w > 0.0f) || !(w < kInfinity)) return {};  // on the light, or not finite
     const float scale = 0.5f * kCells / w;
+    // As cells() does it: clamped as floats, a NaN (a component not finite, no comparison
+    // holds for it) to 0, before the cast (a NaN or a float past an int's range cast to
+    // int is undefined).
     const auto index = [&](float t) {
-        return std::clamp(static_cast<int>(t * scale + 0.5f * kCells), 0, kCells - 1);
+        const float i = std::floor(t * scale + 0.5f * kCells);
+        const float low = i > 0.0f ? i : 0.0f;
+        return static_cast<int>(low < kCells - 1.0f ? low : kCells - 1.0f);
     };
     const Range r =
         cells_[static_cast<std::size_t>(face * kCells * kCells + index(v) * kCells + index(u))];

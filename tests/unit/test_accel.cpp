@@ -178,6 +178,24 @@ TEST_P(AccelTest, FlatSceneAndAxisAlignedRays) {
     EXPECT_EQ(hits, 120);
 }
 
+// A mesh collapsed to one point (every corner the same: no triangle has an area) is
+// legal, degenerate input: it builds and no ray meets it. The grid sized its cells from
+// the bounds' volume, which underflowed to 0, and cast the infinite cell count to int
+// (undefined: the sanitizer build checks float-to-int casts, scripts/sanitize.sh).
+TEST_P(AccelTest, AMeshCollapsedToOnePointBuildsAndIsNeverHit) {
+    for (const float at : {0.0f, 1e-30f, 1.0f, 1e7f}) {
+        TriangleMesh mesh;
+        mesh.positions.assign(30, vec3(at));
+        for (std::uint32_t k = 0; k < 30; k += 3) mesh.triangles.push_back({k, k + 1, k + 2});
+        mesh.build(GetParam());
+        Hit hit;
+        EXPECT_FALSE(mesh.intersect(Ray{vec3(at) - vec3(1.0f), glm::normalize(vec3(1.0f))}, hit))
+            << at;
+        EXPECT_FALSE(mesh.occluded(Ray{vec3(at) - vec3(1.0f), glm::normalize(vec3(1.0f))}, 10.0f))
+            << at;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Structures, AccelTest,
                          ::testing::Values(AccelKind::kBvh, AccelKind::kBvh2, AccelKind::kGrid,
                                            AccelKind::kBrute),
