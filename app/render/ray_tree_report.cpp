@@ -69,7 +69,8 @@ std::string fmt(const vec3& v) {
 std::string fmt_point(const vec3& p, const FileFrame& file) {
     const glm::dvec3 q = in_file(p, file);
     const double largest = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z), 1.0});
-    const int digits = 4 + static_cast<int>(std::ceil(std::log10(largest)));
+    // Up to float's range (a point not finite, or NaN, prints with float's most digits).
+    const int digits = 4 + (largest < 1e39 ? static_cast<int>(std::ceil(std::log10(largest))) : 39);
     char buf[160];
     std::snprintf(buf, sizeof buf, "(%.*g, %.*g, %.*g)", digits, q.x, digits, q.y, digits, q.z);
     return buf;

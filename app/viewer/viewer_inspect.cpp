@@ -27,10 +27,8 @@ std::optional<glm::ivec2> cursor_pixel(GLFWwindow* window, double cx, double cy,
 
 std::string rgb8(const rt::vec3& c) {
     char s[48];
-    std::snprintf(s, sizeof s, "%3d %3d %3d",
-                  static_cast<int>(rt::srgb_encode(c.x) * 255.0f + 0.5f),
-                  static_cast<int>(rt::srgb_encode(c.y) * 255.0f + 0.5f),
-                  static_cast<int>(rt::srgb_encode(c.z) * 255.0f + 0.5f));
+    // The bytes a PNG of the frame holds (a NaN gives 0, where a cast of NaN was undefined).
+    std::snprintf(s, sizeof s, "%3d %3d %3d", rt::srgb8(c.x), rt::srgb8(c.y), rt::srgb8(c.z));
     return s;
 }
 
