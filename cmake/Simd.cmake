@@ -1,11 +1,12 @@
 # The x86-64 level the whole project compiles for (every target alike, so inline code
-# agrees between files). The tracer's wide BVH runs eight lanes under AVX, four under
-# SSE2 (core/simd.h); eight is what keeps it near Embree, which picks its ISA at run
-# time. Contraction to FMA stays off, so the images are the same bit for bit at either
-# level.
+# agrees between files). The tracer's wide BVH has nodes of sixteen under AVX-512, eight
+# under AVX, four under SSE2 (core/simd.h); packets of rays are eight under AVX. The
+# width is what keeps it near Embree, which picks its ISA at run time. Contraction to
+# FMA stays off, so the images are the same bit for bit at every level.
 #   auto: what measured fastest on the machine building it (docs/BENCHMARKS.md,
-#         "fourteenth session"): x86-64-v4 (AVX-512, still eight lanes) on an AMD
-#         processor that runs it (Zen 4: shadow rays and packets 5-10 % faster), else
+#         "fourteenth session"): x86-64-v4 (AVX-512) on an AMD processor that runs it
+#         (Zen 4, eight lanes: shadow rays and packets 5-10 % faster; Zen 5, nodes of
+#         sixteen: shadow and secondary rays 3-9 % faster again, "twenty-fourth"), else
 #         x86-64-v3 (AVX2, FMA, BMI) where the machine runs that (on an Intel Xeon the
 #         AVX-512 build was no faster), else the compiler's default. rtview is built
 #         where it runs; for a binary to copy to other machines, configure with
@@ -56,7 +57,7 @@ if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$" AND NOT RTVIEW_SIMD STREQUA
   endif()
   if(use_v4)
     add_compile_options(-march=x86-64-v4)
-    set(RTVIEW_SIMD_LEVEL "x86-64-v4 (AVX-512, eight lanes)")
+    set(RTVIEW_SIMD_LEVEL "x86-64-v4 (AVX-512, nodes of sixteen)")
   elseif(use_v3)
     add_compile_options(-march=x86-64-v3)
     set(RTVIEW_SIMD_LEVEL "x86-64-v3 (AVX2)")

@@ -19,8 +19,13 @@ namespace {
 // A wide BVH's leaves: up to one test of the SIMD width. Under AVX, two packs tested as
 // one of eight lanes (core/triangle4.h): a leaf of eight costs what a leaf of four did, and
 // the tree has fewer nodes (docs/BENCHMARKS.md, "Leaves of eight"). A subtree of more than
-// four is split where that cuts the area rays enter (Bvh::build). Four under SSE2.
-constexpr std::uint32_t kWideLeaf = kBvhWidth;
+// four is split where that cuts the area rays enter (Bvh::build). Four under SSE2. (Not
+// the nodes' width, kBvhWidth: sixteen under AVX-512, where leaves stay at eight.)
+#if defined(__AVX__)
+constexpr std::uint32_t kWideLeaf = 2 * kTriangle4Lanes;
+#else
+constexpr std::uint32_t kWideLeaf = kTriangle4Lanes;
+#endif
 }  // namespace
 
 void TriangleMesh::build(AccelKind kind, int threads) {

@@ -310,5 +310,8 @@ template class WideBvh<4>;
 #if defined(__AVX__)
 template class WideBvh<8>;
 #endif
+#if defined(__AVX512F__)
+template class WideBvh<16>;
+#endif
 
 }  // namespace rt

@@ -3,9 +3,9 @@
 // "Shallow Bounding Volume Hierarchies for Fast SIMD Ray Tracing of Incoherent Rays"
 // (2008): a node holds the boxes of up to N children as the lanes of six SIMD
 // vectors, and one slab test checks them all. Subtrees of at most four primitives
-// become one leaf, which a mesh tests with one Triangle4. N is 8 where the build
-// targets AVX, else 4 (kBvhWidth, core/simd.h): a shallower tree, fewer dependent
-// node loads per ray.
+// become one leaf, which a mesh tests with one Triangle4. N is 16 where the build
+// targets AVX-512, 8 under AVX, else 4 (kBvhWidth, core/simd.h): a shallower tree,
+// fewer dependent node loads per ray.
 
 #include <array>
 #include <cstdint>
@@ -63,11 +63,12 @@ class WideBvh {
     bool traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const;
     template <bool kAnyHit, class HitPrim>
     bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const;
-    // Up to N rays together (core/wide_bvh_packet.h): rays[lane] for each bit of `active`,
-    // each with its own t_max[lane]. `hit_leaf(first_slot, count, lanes)` tests the leaf
-    // for the rays in `lanes` (a bit each) and returns the bits of those that hit it,
-    // having shortened their t_max; a ray that hits is done if kAnyHit. Every ray gets
-    // the answer traverse_leaves gives it alone (of two hits at the very same t, either).
+    // Up to kPacketWidth rays together (core/wide_bvh_packet.h): rays[lane] for each bit
+    // of `active`, each with its own t_max[lane]. `hit_leaf(first_slot, count, lanes)`
+    // tests the leaf for the rays in `lanes` (a bit each) and returns the bits of those
+    // that hit it, having shortened their t_max; a ray that hits is done if kAnyHit. Every
+    // ray gets the answer traverse_leaves gives it alone (of two hits at the very same t,
+    // either).
     template <bool kAnyHit, class HitLeaf>
     void traverse_packet(const Ray* rays, float* t_max, unsigned active, HitLeaf&& hit_leaf) const;
     template <class F>
@@ -105,6 +106,9 @@ class WideBvh {
 extern template class WideBvh<4>;
 #if defined(__AVX__)
 extern template class WideBvh<8>;
+#endif
+#if defined(__AVX512F__)
+extern template class WideBvh<16>;
 #endif
 
 namespace detail {

@@ -1,11 +1,12 @@
 #pragma once
-// N coherent rays through the wide BVH together (Wald, Slusallek, Benthin and Wagner,
+// Coherent rays through the wide BVH together (Wald, Slusallek, Benthin and Wagner,
 // "Interactive Rendering with Coherent Ray Tracing", 2001; the interval test of Boulos
 // et al., "Geometric and Arithmetic Culling Methods for Entire Ray Packets", 2006).
 // A node is tested once for the whole packet: one slab test over its N children with
 // interval arithmetic on the rays' origins and inverse directions, which bounds every
 // ray's own entry and exit from below and above. Each child it admits is then tested
-// against each ray's own box test (the rays as the lanes), and the child is walked for
+// against each ray's own box test (the rays as the lanes: kPacketWidth of them, eight
+// under AVX also where the nodes have sixteen children), and the child is walked for
 // the rays that enter it only: its triangles are tested by exactly the rays that would
 // test them alone. Each ray ends with the hit it would find alone. (Where the rays share
 // their origin, a camera's, the interval is tight: a leaf it admits skips the rays' own
@@ -23,9 +24,14 @@
 namespace rt {
 namespace detail {
 
+// The rays of a packet, as lanes: at most kPacketWidth, however wide the nodes.
+template <int N>
+inline constexpr int kRayLanes = N < kPacketWidth ? N : kPacketWidth;
+
 template <int N>
 struct PacketBoxes {
-    using Float = typename Lanes<N>::Float;
+    using Float = typename Lanes<N>::Float;                // a lane per child
+    using RayFloat = typename Lanes<kRayLanes<N>>::Float;  // a lane per ray
     // The interval over the rays, each splat over the children: the origin a near plane
     // is measured from (the largest coordinate where the rays go up the axis, else the
     // smallest), the one a far plane is, and the inverse directions' range.
@@ -33,7 +39,7 @@ struct PacketBoxes {
     // them, as in BoxRay).
     Float entry_origin[3], exit_origin[3], inv_lo[3], inv_hi[3], exit_inv_lo[3], exit_inv_hi[3];
     // The rays themselves, a lane each, for each ray's own test.
-    Float inv[3], inv_far[3], origin[3];
+    RayFloat inv[3], inv_far[3], origin[3];
     int near[3], far[3];
     bool one_origin = true;  // the rays share their origin (a camera's): the interval is tight
 
@@ -41,10 +47,11 @@ struct PacketBoxes {
     // rays' origins are finite (traverse_packet leaves the others out); lanes outside
     // `active` repeat its first ray, so they widen nothing.
     bool set(const Ray* rays, unsigned active) {
-        constexpr unsigned kAll = (1u << N) - 1u;
+        constexpr unsigned kAll = (1u << kRayLanes<N>)-1u;
         const int first = __builtin_ctz(active);
-        Float d[3];
-        for (int lane = 0; lane < N; ++lane) {  // each ray read once, its six floats together
+        RayFloat d[3];
+        for (int lane = 0; lane < kRayLanes<N>;
+             ++lane) {  // each ray read once, its six floats together
             const Ray& r = rays[(active >> lane) & 1u ? lane : first];
             d[0][lane] = r.dir.x, d[1][lane] = r.dir.y, d[2][lane] = r.dir.z;
             origin[0][lane] = r.origin.x, origin[1][lane] = r.origin.y;
@@ -56,7 +63,7 @@ struct PacketBoxes {
             inv_far[a] = inv[a] * kSlabExitFactor;
             const unsigned up = bits(d[a] > 0.0f), down = bits(d[a] < 0.0f);
             if ((up != kAll && down != kAll) ||
-                bits(vabs(inv[a]) < splat<Float>(kInfinity)) != kAll)
+                bits(vabs(inv[a]) < splat<RayFloat>(kInfinity)) != kAll)
                 return false;
             const float o_lo = hmin(origin[a]), o_hi = hmax(origin[a]);
             one_origin = one_origin && o_lo == o_hi;
@@ -100,14 +107,14 @@ struct PacketBoxes {
     // A bit per ray that enters child `lane` of `n` within its own (0, t_max): the single
     // ray's test (BoxRay::test), with the rays as the lanes.
     [[gnu::always_inline]] unsigned rays_entering(const WideBvhNode<N>& n, int lane,
-                                                  const Float& t_max) const {
-        const auto plane = [&](int index, int a, const Float* inverse) {
-            return (splat<Float>(n.bounds[index][lane]) - origin[a]) * inverse[a];
+                                                  const RayFloat& t_max) const {
+        const auto plane = [&](int index, int a, const RayFloat* inverse) {
+            return (splat<RayFloat>(n.bounds[index][lane]) - origin[a]) * inverse[a];
         };
-        const Float t_enter = vmax(vmax(plane(near[0], 0, inv), plane(near[1], 1, inv)),
-                                   vmax(plane(near[2], 2, inv), splat<Float>(0.0f)));
-        const Float t_leave = vmin(vmin(plane(far[0], 0, inv_far), plane(far[1], 1, inv_far)),
-                                   vmin(plane(far[2], 2, inv_far), t_max));
+        const RayFloat t_enter = vmax(vmax(plane(near[0], 0, inv), plane(near[1], 1, inv)),
+                                      vmax(plane(near[2], 2, inv), splat<RayFloat>(0.0f)));
+        const RayFloat t_leave = vmin(vmin(plane(far[0], 0, inv_far), plane(far[1], 1, inv_far)),
+                                      vmin(plane(far[2], 2, inv_far), t_max));
         return bits(t_enter <= t_leave);
     }
 };
@@ -115,11 +122,11 @@ struct PacketBoxes {
 // The rays' t_max as lanes (inactive ones -inf, so no box is entered) and the largest.
 template <int N>
 struct PacketLimits {
-    typename Lanes<N>::Float lanes;
+    typename Lanes<kRayLanes<N>>::Float lanes;
     float largest = -kInfinity;
 
     void update(const float* t_max, unsigned active) {
-        for (int lane = 0; lane < N; ++lane)  // (the inactive lanes' t_max may be unset)
+        for (int lane = 0; lane < kRayLanes<N>; ++lane)  // (the inactive lanes' t_max may be unset)
             lanes[lane] = (active >> lane) & 1u ? t_max[lane] : -kInfinity;
         largest = hmax(lanes);
     }
@@ -167,7 +174,7 @@ template <int N>
 template <bool kAnyHit, class HitLeaf>
 void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
                                  HitLeaf&& hit_leaf) const {
-    active &= (1u << N) - 1u;
+    active &= (1u << detail::kRayLanes<N>)-1u;
     for (unsigned m = active; m != 0; m &= m - 1) {
         const int lane = __builtin_ctz(m);
         if (!finite_ray(rays[lane])) active &= ~(1u << lane);

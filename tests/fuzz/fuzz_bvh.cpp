@@ -130,6 +130,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         wide8.build(boxes, leaf);
         walk(wide8, rays, boxes.size());
 #endif
+#if defined(__AVX512F__)
+        rt::WideBvh<16> wide16;
+        wide16.build(boxes, leaf);
+        walk(wide16, rays, boxes.size());
+#endif
     }
     return 0;
 }

@@ -331,7 +331,9 @@ TEST(Bvh, ASmallNodeSortsItsCentresAcrossZero) {
 // shape, flat ones included.
 template <class Wide>
 class WideBvhTest : public ::testing::Test {};
-#if defined(__AVX__)
+#if defined(__AVX512F__)
+using WideWidths = ::testing::Types<WideBvh<4>, WideBvh<8>, WideBvh<16>>;
+#elif defined(__AVX__)
 using WideWidths = ::testing::Types<WideBvh<4>, WideBvh<8>>;
 #else
 using WideWidths = ::testing::Types<WideBvh<4>>;

@@ -282,6 +282,9 @@ TEST(Far, NonFiniteRaysEnterNoBox) {
 #if defined(__AVX__)
     expect_non_finite_rays_miss<WideBvh<8>>();
 #endif
+#if defined(__AVX512F__)
+    expect_non_finite_rays_miss<WideBvh<16>>();
+#endif
 }
 
 // Every triangle's box the same point (a mesh collapsed by float far from the origin):
