@@ -54,7 +54,9 @@ struct Lanes<16> {
 // node loads per ray, each node's test still one instruction per plane. On AMD Zen 5,
 // shadow and secondary rays 3-9 % faster than with eight on every mesh measured
 // (docs/BENCHMARKS.md, "twenty-fourth session").
-#if defined(__AVX512F__)
+#if defined(RTVIEW_BVH_WIDTH)
+inline constexpr int kBvhWidth = RTVIEW_BVH_WIDTH;
+#elif defined(__AVX512F__)
 inline constexpr int kBvhWidth = 16;
 #elif defined(__AVX__)
 inline constexpr int kBvhWidth = 8;
@@ -130,6 +132,36 @@ inline unsigned bits(Mask16 m) {
     return static_cast<unsigned>(_mm512_movepi32_mask(reinterpret_cast<__m512i>(m)));
 }
 #endif
+
+// A comparison as a bit per lane, lane 0 lowest: bits(a < b) and so on, each lane the
+// IEEE predicate of its operator (false where a lane is NaN; kNe true). Where AVX-512
+// compares into a mask register, that mask is the answer: GCC would otherwise turn it
+// into a vector of lanes and back (vcmpps, vmovdqa32 or vpmovm2d, then vpmovd2m or
+// vmovmskps, then kmov), steps on the path from a node's load to the next node's address.
+enum class Compare { kLt, kLe, kGt, kGe, kNe };
+
+template <Compare C, class V>
+[[gnu::always_inline]] inline unsigned lanes(V a, V b) {
+#if defined(__AVX512F__)
+    constexpr int kPredicate = C == Compare::kLt   ? _CMP_LT_OQ
+                               : C == Compare::kLe ? _CMP_LE_OQ
+                               : C == Compare::kGt ? _CMP_GT_OQ
+                               : C == Compare::kGe ? _CMP_GE_OQ
+                                                   : _CMP_NEQ_UQ;
+    if constexpr (sizeof(V) == 64) return _mm512_cmp_ps_mask(a, b, kPredicate);
+#if defined(__AVX512VL__)
+    if constexpr (sizeof(V) == 32) return _mm256_cmp_ps_mask(a, b, kPredicate);
+    if constexpr (sizeof(V) == 16) return _mm_cmp_ps_mask(a, b, kPredicate);
+#endif
+#endif
+    if constexpr (sizeof(V) < 64) {
+        if constexpr (C == Compare::kLt) return bits(a < b);
+        if constexpr (C == Compare::kLe) return bits(a <= b);
+        if constexpr (C == Compare::kGt) return bits(a > b);
+        if constexpr (C == Compare::kGe) return bits(a >= b);
+        if constexpr (C == Compare::kNe) return bits(a != b);
+    }
+}
 
 // The smallest and the largest lane, in log2(lanes) steps (no lane may be NaN).
 inline float hmin(Float4 v) {

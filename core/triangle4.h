@@ -116,16 +116,20 @@ template <class V, class Rel>
 [[gnu::always_inline]] inline Triangle4Hit closest_in_lanes(const Rel& rel, const ShearedRay& r,
                                                             float t_max, unsigned lanes) {
     const auto o = watertight_values<V>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
-    const auto same_sign = ((o.u >= 0.0f) & (o.v >= 0.0f) & (o.w >= 0.0f)) |
-                           ((o.u <= 0.0f) & (o.v <= 0.0f) & (o.w <= 0.0f));
-    const auto inside = same_sign & (o.det != 0.0f);
+    using enum Compare;
+    const V zero = splat<V>(0.0f);
+    const unsigned same_sign =
+        (rt::lanes<kGe>(o.u, zero) & rt::lanes<kGe>(o.v, zero) & rt::lanes<kGe>(o.w, zero)) |
+        (rt::lanes<kLe>(o.u, zero) & rt::lanes<kLe>(o.v, zero) & rt::lanes<kLe>(o.w, zero));
+    const unsigned inside = same_sign & rt::lanes<kNe>(o.det, zero);
     Triangle4Hit best;
-    if (bits(inside) == 0) return best;  // most leaf tests end here, before any division
+    if (inside == 0) return best;  // most leaf tests end here, before any division
     const V t_scaled = r.sz * (o.u * o.az + o.v * o.bz + o.w * o.cz);  // t * det
     const V t = t_scaled / o.det;
-    unsigned candidates = bits(inside & (t > 0.0f) & (t < t_max)) & lanes;
+    unsigned candidates =
+        inside & rt::lanes<kGt>(t, zero) & rt::lanes<kLt>(t, splat<V>(t_max)) & lanes;
     if (candidates == 0) return best;
-    candidates &= bits(vabs(t_scaled) > t_det_error(o, splat<V>(std::fabs(r.sz))));
+    candidates &= rt::lanes<kGt>(vabs(t_scaled), t_det_error(o, splat<V>(std::fabs(r.sz))));
     for (; candidates != 0; candidates &= candidates - 1) {
         const int lane = __builtin_ctz(candidates);
         if (t[lane] < best.t) best = {lane, t[lane], 0.0f, 0.0f};

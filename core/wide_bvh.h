@@ -150,7 +150,7 @@ struct BoxRay {
                        vmax(plane(near[2], 2), splat<Float>(0.0f)));
         const Float t_leave = vmin(vmin(far_plane(far[0], 0), far_plane(far[1], 1)),
                                    vmin(far_plane(far[2], 2), splat<Float>(t_max)));
-        return bits(t_enter <= t_leave);
+        return lanes<Compare::kLe>(t_enter, t_leave);
     }
 };
 

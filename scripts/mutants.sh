@@ -273,10 +273,18 @@ mutant wide-bvh-skips-a-child core/wide_bvh.h \
 # Nodes of sixteen are compiled only for AVX-512 (auto: an AMD processor that runs it).
 if grep -q '^RTVIEW_HOST_AMD_AVX512:INTERNAL=1' "$build/CMakeCache.txt"; then
     mutant node-of-sixteen-loses-its-upper-half core/simd.h \
+        'if constexpr (sizeof(V) == 64) return _mm512_cmp_ps_mask(a, b, kPredicate);' \
+        'if constexpr (sizeof(V) == 64) return _mm512_cmp_ps_mask(a, b, kPredicate) & 0xffu;' \
+        rt_tests $(unit '*WideBvh*:*Accel*')
+    mutant packet-node-of-sixteen-loses-its-upper-half core/simd.h \
         'return static_cast<unsigned>(_mm512_movepi32_mask(reinterpret_cast<__m512i>(m)));' \
         'return static_cast<unsigned>(_mm512_movepi32_mask(reinterpret_cast<__m512i>(m))) & 0xffu;' \
-        rt_tests $(unit '*WideBvh*:*Accel*')
+        rt_tests $(unit '*Packet*')
+    mutant lanes-not-equal-ordered core/simd.h ': _CMP_NEQ_UQ;' ': _CMP_NEQ_OQ;' \
+        rt_tests $(unit 'Simd.*')
 fi
+mutant lanes-less-or-equal-strict core/wide_bvh.h 'return lanes<Compare::kLe>(t_enter, t_leave);' \
+    'return lanes<Compare::kLt>(t_enter, t_leave);' rt_tests $(unit '*WideBvh*:*Accel*:Far.*')
 mutant collapse-splits-one-lane-to-the-left core/wide_bvh.cpp \
     'for (int k = 2; k < j; ++k) {' 'for (int k = 2; k < 2; ++k) {' \
     rt_tests $(unit '*WideBvh*:*Accel*')

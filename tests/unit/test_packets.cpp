@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -93,6 +94,44 @@ TEST(Simd, TheSmallestAndLargestLaneAreFoundInAnyLane) {
         v[at] = 7.25f;
         EXPECT_EQ(hmax(v), 7.25f) << "lane " << at;
     }
+}
+
+// The comparisons as bits (core/simd.h): at every width the build has, each lane the
+// scalar operator's answer, NaN (false, but true for !=), signed zeros and infinities
+// included. A wrong predicate (an ordered != or an unordered <) fails on the NaN pairs.
+template <class V>
+void expect_lanes_compare_as_scalars() {
+    constexpr int kN = static_cast<int>(sizeof(V) / sizeof(float));
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const std::array<float, 7> values{-kInfinity, -1.5f, -0.0f, 0.0f, 2.0f, kInfinity, nan};
+    int pair = 0;
+    for (float x : values)
+        for (float y : values) {
+            const int lane = pair++ % kN;
+            V a = splat<V>(1.0f), b = splat<V>(1.0f);  // the other lanes equal: <=, >= only
+            a[lane] = x;
+            b[lane] = y;
+            const unsigned others = ((1u << kN) - 1u) & ~(1u << lane);
+            const auto expect = [&](unsigned got, bool want, unsigned rest, const char* op) {
+                EXPECT_EQ((got >> lane) & 1u, want ? 1u : 0u) << x << " " << op << " " << y;
+                EXPECT_EQ(got & others, rest) << op << ": the other lanes";
+            };
+            expect(lanes<Compare::kLt>(a, b), x < y, 0u, "<");
+            expect(lanes<Compare::kLe>(a, b), x <= y, others, "<=");
+            expect(lanes<Compare::kGt>(a, b), x > y, 0u, ">");
+            expect(lanes<Compare::kGe>(a, b), x >= y, others, ">=");
+            expect(lanes<Compare::kNe>(a, b), x != y, 0u, "!=");
+        }
+}
+
+TEST(Simd, ComparisonsAsBitsAreTheScalarOperatorsLaneByLane) {
+    expect_lanes_compare_as_scalars<Float4>();
+#if defined(__AVX__)
+    expect_lanes_compare_as_scalars<Float8>();
+#endif
+#if defined(__AVX512F__)
+    expect_lanes_compare_as_scalars<Float16>();
+#endif
 }
 
 TEST_P(PacketTest, EveryRayGetsTheHitItGetsAlone) {
