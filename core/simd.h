@@ -52,9 +52,13 @@ struct Lanes<16> {
 
 // Sixteen children a node under AVX-512: a shallower tree, a quarter fewer dependent
 // node loads per ray, each node's test still one instruction per plane. On AMD Zen 5,
-// shadow and secondary rays 3-9 % faster than with eight on every mesh measured
-// (docs/BENCHMARKS.md, "twenty-fourth session").
+// shadow and secondary rays 3-9 % faster than with eight on every mesh measured; on Zen 4
+// 2-7 % (docs/BENCHMARKS.md, "twenty-fourth session", "twenty-sixth session"). For such
+// measurements a build may name the width (-DRTVIEW_BVH_WIDTH=8 in CMAKE_CXX_FLAGS; 4, 8
+// under AVX, 16 under AVX-512).
 #if defined(RTVIEW_BVH_WIDTH)
+static_assert(RTVIEW_BVH_WIDTH == 4 || RTVIEW_BVH_WIDTH == 8 || RTVIEW_BVH_WIDTH == 16,
+              "RTVIEW_BVH_WIDTH: 4, 8 or 16");
 inline constexpr int kBvhWidth = RTVIEW_BVH_WIDTH;
 #elif defined(__AVX512F__)
 inline constexpr int kBvhWidth = 16;
