@@ -483,6 +483,9 @@ mutant packet-leaf-across-swaps-barycentrics core/mesh_packet.cpp \
     'record(ray, start + k, lane[ray], b1[ray], b2[ray]);' \
     'record(ray, start + k, lane[ray], b2[ray], b1[ray]);' \
     rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant packet-triangles-back-faces-missed core/triangle_packet.h \
+    '(rt::lanes<kLe>(o.u, zero) & rt::lanes<kLe>(o.v, zero) & rt::lanes<kLe>(o.w, zero));' \
+    '0u;' rt_tests $(unit 'TrianglePacket.*:EveryKind/PacketTest.*')
 mutant packet-triangles-error-bound-unscaled core/triangle_packet.h \
     't_det_error(o, r.abs_sz)' 't_det_error(o, splat<Float>(1.0f))' \
     rt_tests $(unit 'TrianglePacket.*')
