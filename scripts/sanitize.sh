@@ -47,9 +47,8 @@ asan_ctest() {
             rm -f "$log"
             return 0
         fi
-        # The tests listed under CTest's "FAILED" heading (not those under "did not run":
-        # a skipped test, such as the huge-page tests where the kernel gives none, is no
-        # failure).
+        # The tests listed under CTest's "FAILED" heading, not those under "did not run"
+        # (the huge-page tests skip under AddressSanitizer, in every run).
         failed=$(awk '/^The following tests FAILED:/ { listed = 1; next }
                       listed && /^[[:space:]]+[0-9]+ - / { n++ }
                       listed && !/^[[:space:]]+[0-9]+ - / { listed = 0 }
