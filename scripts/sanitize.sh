@@ -65,7 +65,15 @@ asan_ctest() {
 # POV-Ray oracle, a question about images that the main run answers), the
 # viewer's GUI test under Xvfb included, with leak checking on: a leak
 # makes the process exit non-zero, which fails its test.
-asan_ctest -j "$(nproc)" -LE "gui|soak|oracle" || status=1
+# Image.ExrIsReadAndWrittenOnTheCallersThread (a question about threads, not memory: its
+# EXR is written and read under leak checking by Image.ExrAndPngHoldTheSameRows too) runs
+# without the leak check: on an AMD Zen 4, under CTest and only there, LeakSanitizer's
+# tracer crashed after it at every run (three in a row in CI, four of four by hand; none in
+# 20 runs of the same command outside CTest).
+no_leak_check='^Image\.ExrIsReadAndWrittenOnTheCallersThread$'
+asan_ctest -j "$(nproc)" -LE "gui|soak|oracle" -E "$no_leak_check" || status=1
+ASAN_OPTIONS="detect_leaks=0:abort_on_error=1" ctest --test-dir build-asan --output-on-failure \
+    -R "$no_leak_check" || status=1
 asan_ctest -L gui || status=1
 unset LSAN_OPTIONS UBSAN_OPTIONS
 
