@@ -69,7 +69,7 @@ asan_ctest() {
 # EXR is written and read under leak checking by Image.ExrAndPngHoldTheSameRows too) runs
 # without the leak check: on an AMD Zen 4, under CTest and only there, LeakSanitizer's
 # tracer crashed after it at every run (three in a row in CI, four of four by hand; none in
-# 20 runs of the same command outside CTest).
+# 18 runs of the same command outside CTest).
 no_leak_check='^Image\.ExrIsReadAndWrittenOnTheCallersThread$'
 asan_ctest -j "$(nproc)" -LE "gui|soak|oracle" -E "$no_leak_check" || status=1
 ASAN_OPTIONS="detect_leaks=0:abort_on_error=1" ctest --test-dir build-asan --output-on-failure \
