@@ -106,9 +106,27 @@ template <class V>
     return 3.0f * (gamma(3) * e_max * z_max + delta_e * z_max + gamma(3) * z_max * e_max);
 }
 
-}  // namespace detail
-
-namespace detail {
+// The lanes of `asked` whose triangle the ray hits: the edge functions of one sign and
+// det != 0 (the hit is inside), t in (0, limit) and beyond its rounding error. Writes
+// each lane's t (meaningful in the lanes returned). sz, abs_sz: the shear's sz and |sz|.
+// The one test of both the single ray's leaves and the packets' (core/triangle_packet.h).
+template <class V, class S>
+[[gnu::always_inline]] inline unsigned watertight_hits(const WatertightValues<V>& o, S sz,
+                                                       const V& abs_sz, const V& limit,
+                                                       unsigned asked, V& t) {
+    using enum Compare;
+    const V zero = splat<V>(0.0f);
+    const unsigned same_sign =
+        (lanes<kGe>(o.u, zero) & lanes<kGe>(o.v, zero) & lanes<kGe>(o.w, zero)) |
+        (lanes<kLe>(o.u, zero) & lanes<kLe>(o.v, zero) & lanes<kLe>(o.w, zero));
+    const unsigned inside = same_sign & lanes<kNe>(o.det, zero) & asked;
+    if (inside == 0) return 0;  // most leaf tests end here, before any division
+    const V t_scaled = sz * (o.u * o.az + o.v * o.bz + o.w * o.cz);  // t * det
+    t = t_scaled / o.det;
+    const unsigned candidates = inside & lanes<kGt>(t, zero) & lanes<kLt>(t, limit);
+    if (candidates == 0) return 0;
+    return candidates & lanes<kGt>(vabs(t_scaled), t_det_error(o, abs_sz));
+}
 
 // The closest of the triangles in V's lanes (rel: a vertex's coordinate relative to the
 // ray's origin, as lanes) within (0, t_max), among `lanes`.
@@ -116,20 +134,10 @@ template <class V, class Rel>
 [[gnu::always_inline]] inline Triangle4Hit closest_in_lanes(const Rel& rel, const ShearedRay& r,
                                                             float t_max, unsigned lanes) {
     const auto o = watertight_values<V>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
-    using enum Compare;
-    const V zero = splat<V>(0.0f);
-    const unsigned same_sign =
-        (rt::lanes<kGe>(o.u, zero) & rt::lanes<kGe>(o.v, zero) & rt::lanes<kGe>(o.w, zero)) |
-        (rt::lanes<kLe>(o.u, zero) & rt::lanes<kLe>(o.v, zero) & rt::lanes<kLe>(o.w, zero));
-    const unsigned inside = same_sign & rt::lanes<kNe>(o.det, zero);
+    V t;
+    unsigned candidates = watertight_hits(o, r.sz, splat<V>(std::fabs(r.sz)),
+                                          splat<V>(t_max), lanes, t);
     Triangle4Hit best;
-    if (inside == 0) return best;  // most leaf tests end here, before any division
-    const V t_scaled = r.sz * (o.u * o.az + o.v * o.bz + o.w * o.cz);  // t * det
-    const V t = t_scaled / o.det;
-    unsigned candidates =
-        inside & rt::lanes<kGt>(t, zero) & rt::lanes<kLt>(t, splat<V>(t_max)) & lanes;
-    if (candidates == 0) return best;
-    candidates &= rt::lanes<kGt>(vabs(t_scaled), t_det_error(o, splat<V>(std::fabs(r.sz))));
     for (; candidates != 0; candidates &= candidates - 1) {
         const int lane = __builtin_ctz(candidates);
         if (t[lane] < best.t) best = {lane, t[lane], 0.0f, 0.0f};

@@ -101,18 +101,7 @@ template <bool kBarycentrics, int N, class Rel>
                                                         typename Lanes<N>::Float& b2) {
     using Float = typename Lanes<N>::Float;
     const auto o = watertight_values<Float>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
-    using enum Compare;
-    const Float zero = splat<Float>(0.0f);
-    const unsigned same_sign =
-        (rt::lanes<kGe>(o.u, zero) & rt::lanes<kGe>(o.v, zero) & rt::lanes<kGe>(o.w, zero)) |
-        (rt::lanes<kLe>(o.u, zero) & rt::lanes<kLe>(o.v, zero) & rt::lanes<kLe>(o.w, zero));
-    const unsigned inside = same_sign & rt::lanes<kNe>(o.det, zero) & lanes;
-    if (inside == 0) return 0;
-    const Float t_scaled = r.sz * (o.u * o.az + o.v * o.bz + o.w * o.cz);
-    t = t_scaled / o.det;
-    unsigned candidates = inside & rt::lanes<kGt>(t, zero) & rt::lanes<kLt>(t, limit);
-    if (candidates == 0) return 0;
-    candidates &= rt::lanes<kGt>(vabs(t_scaled), t_det_error(o, r.abs_sz));
+    const unsigned candidates = watertight_hits(o, r.sz, r.abs_sz, limit, lanes, t);
     if constexpr (kBarycentrics) {
         if (candidates != 0) {
             b1 = o.v / o.det;  // each lane's own IEEE division

@@ -483,11 +483,15 @@ mutant packet-leaf-across-swaps-barycentrics core/mesh_packet.cpp \
     'record(ray, start + k, lane[ray], b1[ray], b2[ray]);' \
     'record(ray, start + k, lane[ray], b2[ray], b1[ray]);' \
     rt_tests $(unit 'EveryKind/PacketTest.*')
-mutant packet-triangles-back-faces-missed core/triangle_packet.h \
-    '(rt::lanes<kLe>(o.u, zero) & rt::lanes<kLe>(o.v, zero) & rt::lanes<kLe>(o.w, zero));' \
-    '0u;' rt_tests $(unit 'TrianglePacket.*:EveryKind/PacketTest.*')
+mutant watertight-back-faces-missed core/triangle4.h \
+    '(lanes<kLe>(o.u, zero) & lanes<kLe>(o.v, zero) & lanes<kLe>(o.w, zero));' \
+    '0u;' rt_tests $(unit 'Triangle4.*:TrianglePacket.*:EveryKind/PacketTest.*')
+mutant watertight-error-bound-ignored core/triangle4.h \
+    'return candidates & lanes<kGt>(vabs(t_scaled), t_det_error(o, abs_sz));' \
+    'return candidates;' rt_tests $(unit 'Triangle4.*:TrianglePacket.*')
 mutant packet-triangles-error-bound-unscaled core/triangle_packet.h \
-    't_det_error(o, r.abs_sz)' 't_det_error(o, splat<Float>(1.0f))' \
+    'watertight_hits(o, r.sz, r.abs_sz, limit, lanes, t)' \
+    'watertight_hits(o, r.sz, splat<Float>(1.0f), limit, lanes, t)' \
     rt_tests $(unit 'TrianglePacket.*')
 mutant packet-interval-of-the-first-ray core/wide_bvh_packet.h \
     'const Ray& r = rays[(active >> lane) & 1u ? lane : first];' 'const Ray& r = rays[first];' \
