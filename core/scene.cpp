@@ -1,6 +1,7 @@
 #include "core/scene.h"
 
 #include <array>
+#include <cstddef>
 #include <cstring>
 #include <optional>
 #include <type_traits>
@@ -346,14 +347,18 @@ bool Scene::plane_surfaces(const Ray* rays, const Hit* hits, const std::uint32_t
     if (!plane || o.transform) return false;
     for (int k = 1; k < n; ++k)
         if (hits[which[k]].object != object) return false;
-    Lanes3 from, dir;
+    // A ray's origin and direction as rows of four floats: the origin and the direction's
+    // x; the origin's z and the direction.
+    static_assert(offsetof(Ray, dir) == 3 * sizeof(float));
+    std::array<const float*, kPacketWidth> origins, dirs;
     Float t;
     for (int lane = 0; lane < kPacketWidth; ++lane) {
         const std::uint32_t i = which[lane < n ? lane : 0];
-        from.set(lane, rays[i].origin);
-        dir.set(lane, rays[i].dir);
+        origins[lane] = &rays[i].origin.x;
+        dirs[lane] = &rays[i].origin.z;
         t[lane] = hits[i].t;
     }
+    const Lanes3 from = Lanes3::transpose(origins, 0), dir = Lanes3::transpose(dirs, 1);
     // Plane::surface, then Scene::surface's steps for a plane.
     const Lanes3 normal = Lanes3::splat(plane->normal);
     Lanes3 p = from + dir * t;

@@ -167,6 +167,39 @@ template <Compare C, class V>
     }
 }
 
+// Lane k of out[c] is rows[k][c]: N rows of four floats, transposed (N = 4 or 8). Each
+// row is read as one unaligned vector under SSE and AVX, else float by float.
+template <int N>
+inline void transpose_rows(const float* const* rows, typename Lanes<N>::Float (&out)[4]) {
+#if defined(__AVX__)
+    if constexpr (N == 8) {
+        const auto pair = [&](int k) {  // rows k and k + 4: lanes k of each half
+            return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rows[k])),
+                                        _mm_loadu_ps(rows[k + 4]), 1);
+        };
+        const __m256 r04 = pair(0), r15 = pair(1), r26 = pair(2), r37 = pair(3);
+        const __m256 lo01 = _mm256_unpacklo_ps(r04, r15), hi01 = _mm256_unpackhi_ps(r04, r15);
+        const __m256 lo23 = _mm256_unpacklo_ps(r26, r37), hi23 = _mm256_unpackhi_ps(r26, r37);
+        out[0] = _mm256_shuffle_ps(lo01, lo23, 0x44);
+        out[1] = _mm256_shuffle_ps(lo01, lo23, 0xee);
+        out[2] = _mm256_shuffle_ps(hi01, hi23, 0x44);
+        out[3] = _mm256_shuffle_ps(hi01, hi23, 0xee);
+        return;
+    }
+#endif
+#if defined(__SSE__)
+    if constexpr (N == 4) {
+        __m128 r0 = _mm_loadu_ps(rows[0]), r1 = _mm_loadu_ps(rows[1]);
+        __m128 r2 = _mm_loadu_ps(rows[2]), r3 = _mm_loadu_ps(rows[3]);
+        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+        out[0] = r0, out[1] = r1, out[2] = r2, out[3] = r3;
+        return;
+    }
+#endif
+    for (int k = 0; k < N; ++k)
+        for (int c = 0; c < 4; ++c) out[c][k] = rows[k][c];
+}
+
 // The smallest and the largest lane, in log2(lanes) steps (no lane may be NaN).
 inline float hmin(Float4 v) {
     v = vmin(v, __builtin_shufflevector(v, v, 2, 3, 0, 1));

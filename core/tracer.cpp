@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 
 #include <glm/geometric.hpp>
 
@@ -214,7 +215,8 @@ struct Tracer::PhongInputs {
 void Tracer::shade_found(const Ray* rays, const Hit* hits, const std::uint32_t* which, int n,
                          RayCounts& counts, vec3* colours) const {
     std::array<SurfacePoint, kPacketWidth> sps;
-    std::array<vec3, kPacketWidth> dirs{}, local{};
+    std::array<vec3, kPacketWidth + 1> dirs{};  // one more: phong_inputs reads a float past each
+    std::array<vec3, kPacketWidth> local{};
     const bool on_a_plane = scene_.plane_surfaces(rays, hits, which, n, sps.data());
     for (int k = 0; k < n; ++k) {
         if (!on_a_plane) sps[k] = scene_.surface(rays[which[k]], hits[which[k]]);
@@ -246,30 +248,43 @@ Tracer::PhongInputs Tracer::phong_inputs(const SurfacePoint* sps, const vec3* di
     }
     const Material& first = scene_.materials[sps[0].material];
     const bool checker_across = one_material && first.checker && !first.texture;
-    ShadeLanes dir, pattern_point, colour;
-    for (int lane = 0; lane < kPacketWidth; ++lane) {
-        const int k = lane < n ? lane : 0;
-        const Material& m = scene_.materials[sps[k].material];
-        if (checker_across) {
-            pattern_point.set(lane, sps[k].pattern_point);
-            colour.set(lane, sps[k].colour);
-        } else {
-            in.pattern.set(lane, pattern_at(m, sps[k]));
-        }
-        if (!one_material) {
-            in.ka.set(lane, m.ka);
-            in.kd.set(lane, m.kd);
-            in.ks.set(lane, m.ks);
-            in.emission.set(lane, m.emission);
-            in.shininess[lane] = m.shininess;
-        }
-        in.p.set(lane, sps[k].p);
-        in.normal.set(lane, sps[k].normal);
-        if (options_.shadows) in.geometric.set(lane, sps[k].geometric_normal);
-        dir.set(lane, dirs[k]);
+    // Each of a SurfacePoint's vectors is followed by another field: a row of four floats.
+    static_assert(offsetof(SurfacePoint, colour) + 4 * sizeof(float) <= sizeof(SurfacePoint));
+    const auto rows_of = [&](const vec3* v) {  // v[0 .. n) with a float after the last
+        std::array<const float*, kPacketWidth> rows;
+        for (int lane = 0; lane < kPacketWidth; ++lane) rows[lane] = &v[lane < n ? lane : 0].x;
+        return ShadeLanes::transpose(rows, 0);
+    };
+    const auto field = [&](vec3 SurfacePoint::*member) {
+        std::array<const float*, kPacketWidth> rows;
+        for (int lane = 0; lane < kPacketWidth; ++lane)
+            rows[lane] = &(sps[lane < n ? lane : 0].*member).x;
+        return ShadeLanes::transpose(rows, 0);
+    };
+    if (checker_across) {
+        in.pattern = checker_lanes(*first.checker, field(&SurfacePoint::pattern_point)) *
+                     field(&SurfacePoint::colour);
     }
-    if (checker_across) in.pattern = checker_lanes(*first.checker, pattern_point) * colour;
-    in.to_viewer = -normalize(dir);
+    std::array<vec3, kPacketWidth + 1> patterns;  // one more: a row of four floats each
+    if (!checker_across || !one_material) {
+        for (int lane = 0; lane < kPacketWidth; ++lane) {
+            const int k = lane < n ? lane : 0;
+            const Material& m = scene_.materials[sps[k].material];
+            if (!checker_across) patterns[lane] = pattern_at(m, sps[k]);
+            if (!one_material) {
+                in.ka.set(lane, m.ka);
+                in.kd.set(lane, m.kd);
+                in.ks.set(lane, m.ks);
+                in.emission.set(lane, m.emission);
+                in.shininess[lane] = m.shininess;
+            }
+        }
+    }
+    if (!checker_across) in.pattern = rows_of(patterns.data());
+    in.p = field(&SurfacePoint::p);
+    in.normal = field(&SurfacePoint::normal);
+    if (options_.shadows) in.geometric = field(&SurfacePoint::geometric_normal);
+    in.to_viewer = -normalize(rows_of(dirs));  // dirs has a float after its last
     if (options_.shadows) in.origin = offset_ray_origin(in.p, in.geometric);
     return in;
 }

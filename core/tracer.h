@@ -110,7 +110,8 @@ class Tracer {
     // The reflected and refracted rays' terms of shade_parts, from the hit's surface.
     void bounces(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,
                  RayCounts& counts, PrimaryParts& parts) const;
-    // phong for sps[0 .. n), seen along the directions `dirs`, a lane each.
+    // phong for sps[0 .. n), seen along the directions `dirs`, a lane each (dirs[n - 1]
+    // followed by a readable float: they are read four floats at a time).
     struct PhongInputs;
     PhongInputs phong_inputs(const SurfacePoint* sps, const vec3* dirs, int n) const;
     void phong_lanes(const SurfacePoint* sps, const vec3* dirs, int n, RayCounts& counts,

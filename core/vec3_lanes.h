@@ -5,6 +5,7 @@
 // product is (x x' + y y') + z z'; a normalisation multiplies by 1 / sqrt), and the build
 // does not fuse a * b + c, so every lane's result is bit for bit what glm computes.
 
+#include <array>
 #include <bit>
 
 #include "core/ray.h"
@@ -27,6 +28,17 @@ struct Vec3Lanes {
         z[lane] = v.z;
     }
     vec3 get(int lane) const { return vec3(x[lane], y[lane], z[lane]); }
+
+    // Lane k: the three floats at rows[k] + first (first 0 or 1), as set(k, ...) of each
+    // would make them. Each rows[k] must point at four readable floats (a vec3 and the
+    // field after it, or the one before it and the vec3): they are read whole and
+    // transposed (transpose_rows), where setting a lane at a time stores the floats one
+    // by one and then loads the vector over them, a store-forwarding stall per vector.
+    static Vec3Lanes transpose(const std::array<const float*, N>& rows, int first) {
+        Float c[4];
+        transpose_rows<N>(rows.data(), c);
+        return {c[first], c[first + 1], c[first + 2]};
+    }
 
     friend Vec3Lanes operator+(const Vec3Lanes& a, const Vec3Lanes& b) {
         return {a.x + b.x, a.y + b.y, a.z + b.z};

@@ -233,14 +233,24 @@ mutant shade-lanes-unlit-added core/tracer.cpp \
     'colour = select(ShadeLanes::mask(lit), colour + term, colour);' 'colour = colour + term;' \
     rt_tests $(unit 'ShadeFound.*')
 mutant shade-lanes-viewer-unnormalised core/tracer.cpp \
-    'in.to_viewer = -normalize(dir);' 'in.to_viewer = -dir;' \
+    'in.to_viewer = -normalize(rows_of(dirs));' 'in.to_viewer = -rows_of(dirs);' \
     rt_tests $(unit 'ShadeFound.*')
 mutant shade-lanes-checker-parity core/tracer.cpp \
     '(sum == splat<Float>(0.0f)) | (sum == splat<Float>(2.0f))' '(sum == splat<Float>(0.0f))' \
     rt_tests $(unit 'ShadeFound.*')
 mutant shade-lanes-checker-without-colour core/tracer.cpp \
-    'checker_lanes(*first.checker, pattern_point) * colour;' 'checker_lanes(*first.checker, pattern_point);' \
+    'field(&SurfacePoint::colour);' 'ShadeLanes::splat(vec3(1.0f));' \
     rt_tests $(unit 'ShadeFound.*')
+mutant plane-lanes-direction-misread core/scene.cpp \
+    'dir = Lanes3::transpose(dirs, 1);' 'dir = Lanes3::transpose(dirs, 0);' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant shade-lanes-pattern-of-lane-zero core/tracer.cpp \
+    'for (int lane = 0; lane < kPacketWidth; ++lane) rows[lane] = &v[lane < n ? lane : 0].x;' \
+    'for (int lane = 0; lane < kPacketWidth; ++lane) rows[lane] = &v[0].x;' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant transpose-rows-upper-half-repeats-the-lower core/simd.h \
+    '_mm_loadu_ps(rows[k + 4]), 1);' '_mm_loadu_ps(rows[k]), 1);' \
+    rt_tests $(unit 'Simd.*')
 mutant plane-lanes-not-back-on-the-plane core/scene.cpp \
     'p = p - normal * (dot(p, normal) - splat<Float>(plane->offset));' '' \
     rt_tests $(unit 'ShadeFound.*')

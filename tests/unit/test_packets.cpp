@@ -15,6 +15,7 @@
 #include "core/tessellate.h"
 #include "core/transform.h"
 #include "core/triangle_packet.h"
+#include "core/vec3_lanes.h"
 #include "test_util.h"
 
 namespace rt {
@@ -131,6 +132,36 @@ TEST(Simd, ComparisonsAsBitsAreTheScalarOperatorsLaneByLane) {
 #endif
 #if defined(__AVX512F__)
     expect_lanes_compare_as_scalars<Float16>();
+#endif
+}
+
+// Rows of four floats from anywhere (here one array, in a shuffled order, rows
+// overlapping), transposed: lane k of column c is row k's float c.
+template <int N>
+void expect_rows_transposed() {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> any(-100.0f, 100.0f);
+    std::array<float, 64> floats;
+    for (float& f : floats) f = any(rng);
+    for (int round = 0; round < 50; ++round) {
+        std::array<const float*, N> rows;
+        for (int k = 0; k < N; ++k) rows[k] = floats.data() + rng() % (floats.size() - 3);
+        typename Lanes<N>::Float columns[4];
+        transpose_rows<N>(rows.data(), columns);
+        for (int k = 0; k < N; ++k)
+            for (int c = 0; c < 4; ++c) ASSERT_EQ(columns[c][k], rows[k][c]) << k << ", " << c;
+        for (int first = 0; first < 2; ++first) {
+            const Vec3Lanes<N> v = Vec3Lanes<N>::transpose(rows, first);
+            for (int k = 0; k < N; ++k)
+                ASSERT_EQ(v.get(k), vec3(rows[k][first], rows[k][first + 1], rows[k][first + 2]));
+        }
+    }
+}
+
+TEST(Simd, RowsOfFourFloatsAreTransposedIntoLanes) {
+    expect_rows_transposed<4>();
+#if defined(__AVX__)
+    expect_rows_transposed<8>();
 #endif
 }
 
