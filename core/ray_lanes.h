@@ -3,6 +3,7 @@
 // packet, then handed to every test across the rays (core/shape_packets.h, the item
 // buffer's named triangle), which no longer read the rays one lane at a time.
 
+#include <array>
 #include <cstddef>
 
 #include "core/hit.h"
@@ -39,13 +40,23 @@ struct RayLanes {
 
     // rays[lane] for each bit of `lanes` (one or more); the other lanes copy the first of
     // them (real numbers, so no lane computes a NaN or a trap).
+    // Each ray is read as two rows of four floats, transposed (transpose_rows): its origin
+    // and its direction's x, then its origin's z and its direction.
     static RayLanes gather(const Ray* rays, unsigned lanes) {
-        static_assert(sizeof(Ray) == 6 * sizeof(float));
-        RayLanes out;
-        for (int a = 0; a < 3; ++a) {
-            out.origin[a] = detail::gather_field<N>(&rays[0].origin[0] + a, 6, lanes);
-            out.dir[a] = detail::gather_field<N>(&rays[0].dir[0] + a, 6, lanes);
+        static_assert(sizeof(Ray) == 6 * sizeof(float) && offsetof(Ray, dir) == 3 * sizeof(float));
+        std::array<const float*, N> front, back;
+        const int first = __builtin_ctz(lanes);
+        for (int k = 0; k < N; ++k) {
+            const Ray& r = rays[(lanes >> k) & 1u ? k : first];
+            front[k] = &r.origin.x;
+            back[k] = &r.origin.z;
         }
+        RayLanes out;
+        Float columns[4];
+        transpose_rows<N>(front.data(), columns);
+        for (int a = 0; a < 3; ++a) out.origin[a] = columns[a];
+        transpose_rows<N>(back.data(), columns);
+        for (int a = 0; a < 3; ++a) out.dir[a] = columns[a + 1];
         return out;
     }
 

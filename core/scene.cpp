@@ -180,27 +180,19 @@ unsigned shape_packet(const Shape& shape, std::uint32_t object, const RayLanes<k
     return hit;
 }
 
-// The plane's test for the rays of `lanes` (intersect_lanes' arithmetic), its lanes read
-// straight from the rays: in every camera packet of a scene with a floor, where a
-// RayLanes gathered first (by gather instructions or through memory) cost the primary
-// step 4 to 10 % (tutorial, interleaved runs).
+// The plane's test for the rays of `lanes` (intersect_lanes' arithmetic): in every camera
+// packet of a scene with a floor. (A RayLanes gathered by gather instructions or through
+// memory cost the primary step 4 to 10 %, tutorial, interleaved runs; it is now read as
+// rows and transposed.)
 unsigned plane_packet(const Plane& p, std::uint32_t object, const Ray* rays, Hit* hits,
                       unsigned lanes) {
     using Float = Lanes<kPacketWidth>::Float;
-    const int first = __builtin_ctz(lanes);
-    Float d_dot_n{}, o_dot_n{}, t_max{};  // glm::dot's order: (x + y) + z (set at a == 0)
-    for (int a = 0; a < 3; ++a) {
-        Float o, d;
-        for (int lane = 0; lane < kPacketWidth; ++lane) {
-            const Ray& r = rays[(lanes >> lane) & 1u ? lane : first];
-            o[lane] = r.origin[a];
-            d[lane] = r.dir[a];
-        }
-        d_dot_n = a == 0 ? d * p.normal[a] : d_dot_n + d * p.normal[a];
-        o_dot_n = a == 0 ? o * p.normal[a] : o_dot_n + o * p.normal[a];
-    }
-    for (int lane = 0; lane < kPacketWidth; ++lane)
-        t_max[lane] = hits[(lanes >> lane) & 1u ? lane : first].t;
+    const RayLanes<kPacketWidth> r = RayLanes<kPacketWidth>::gather(rays, lanes);
+    const auto dot_n = [&](const Float* v) {  // glm::dot's order: (x + y) + z
+        return (v[0] * p.normal[0] + v[1] * p.normal[1]) + v[2] * p.normal[2];
+    };
+    const Float d_dot_n = dot_n(r.dir), o_dot_n = dot_n(r.origin);
+    const Float t_max = t_bounds<kPacketWidth>(hits, lanes);
     const Float zero = splat<Float>(0.0f);
     const Float t = (splat<Float>(p.offset) - o_dot_n) / d_dot_n;
     const unsigned hit = bits((d_dot_n != zero) & (t > zero) & (t < t_max)) & lanes;

@@ -167,6 +167,33 @@ template <Compare C, class V>
     }
 }
 
+// sizeof(V) / 4 floats from p, which need not be aligned.
+template <class V>
+[[gnu::always_inline]] inline V load(const float* p) {
+    V v;
+    __builtin_memcpy(&v, p, sizeof v);
+    return v;
+}
+
+// Lane k: a's where bit k of `mask` is set, else b's. Where AVX-512 blends under a mask
+// register, the bits are that mask; elsewhere they become a vector of lanes.
+template <class V>
+[[gnu::always_inline]] inline V select_bits(unsigned mask, V a, V b) {
+#if defined(__AVX512F__)
+    if constexpr (sizeof(V) == 64) return _mm512_mask_blend_ps(static_cast<__mmask16>(mask), b, a);
+#if defined(__AVX512VL__)
+    if constexpr (sizeof(V) == 32) return _mm256_mask_blend_ps(static_cast<__mmask8>(mask), b, a);
+    if constexpr (sizeof(V) == 16) return _mm_mask_blend_ps(static_cast<__mmask8>(mask), b, a);
+#endif
+#endif
+    if constexpr (sizeof(V) < 64) {
+        using M = typename Lanes<sizeof(V) / sizeof(float)>::Mask;
+        M bit;
+        for (int k = 0; k < static_cast<int>(sizeof(V) / sizeof(float)); ++k) bit[k] = 1 << k;
+        return ((M{} + static_cast<std::int32_t>(mask)) & bit) != 0 ? a : b;
+    }
+}
+
 // Lane k of out[c] is rows[k][c]: N rows of four floats, transposed (N = 4 or 8). Each
 // row is read as one unaligned vector under SSE and AVX, else float by float.
 template <int N>

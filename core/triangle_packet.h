@@ -122,8 +122,7 @@ template <bool kAnyHit, int N>
                                                  unsigned lanes, float* t_max, int* lane_out,
                                                  float* b1, float* b2, unsigned triangles = 0xfu) {
     using Float = typename Lanes<N>::Float;
-    Float limit;
-    for (int lane = 0; lane < N; ++lane) limit[lane] = (lanes >> lane) & 1u ? t_max[lane] : 0.0f;
+    Float limit = select_bits(lanes, load<Float>(t_max), splat<Float>(0.0f));
     unsigned found = 0;
     for (int j = 0; j < 4; ++j) {
         if (((triangles >> j) & 1u) == 0) continue;
@@ -138,14 +137,15 @@ template <bool kAnyHit, int N>
             if (lanes == 0) return found;
             continue;
         }
+        if (candidates == 0) continue;
+        limit = select_bits(candidates, t, limit);  // each candidate is nearer than its limit
+        found |= candidates;
         for (; candidates != 0; candidates &= candidates - 1) {
             const int ray = __builtin_ctz(candidates);
-            limit[ray] = t[ray];
             t_max[ray] = t[ray];
             lane_out[ray] = j;
             b1[ray] = v[ray];
             b2[ray] = w[ray];
-            found |= 1u << ray;
         }
     }
     return found;

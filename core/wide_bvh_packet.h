@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/ray_lanes.h"
 #include "core/wide_bvh.h"
 
 namespace rt {
@@ -48,15 +49,9 @@ struct PacketBoxes {
     // `active` repeat its first ray, so they widen nothing.
     bool set(const Ray* rays, unsigned active) {
         constexpr unsigned kAll = (1u << kRayLanes<N>)-1u;
-        const int first = __builtin_ctz(active);
-        RayFloat d[3];
-        for (int lane = 0; lane < kRayLanes<N>;
-             ++lane) {  // each ray read once, its six floats together
-            const Ray& r = rays[(active >> lane) & 1u ? lane : first];
-            d[0][lane] = r.dir.x, d[1][lane] = r.dir.y, d[2][lane] = r.dir.z;
-            origin[0][lane] = r.origin.x, origin[1][lane] = r.origin.y;
-            origin[2][lane] = r.origin.z;
-        }
+        const auto gathered = RayLanes<kRayLanes<N>>::gather(rays, active);
+        const RayFloat* d = gathered.dir;
+        for (int a = 0; a < 3; ++a) origin[a] = gathered.origin[a];
         one_origin = true;
         for (int a = 0; a < 3; ++a) {
             inv[a] = 1.0f / d[a];  // lane by lane the single ray's 1.0f / dir (IEEE division)
@@ -125,9 +120,9 @@ struct PacketLimits {
     typename Lanes<kRayLanes<N>>::Float lanes;
     float largest = -kInfinity;
 
-    void update(const float* t_max, unsigned active) {
-        for (int lane = 0; lane < kRayLanes<N>; ++lane)  // (the inactive lanes' t_max may be unset)
-            lanes[lane] = (active >> lane) & 1u ? t_max[lane] : -kInfinity;
+    void update(const float* t_max, unsigned active) {  // (the inactive lanes' t_max may be unset)
+        using Float = typename Lanes<kRayLanes<N>>::Float;
+        lanes = select_bits(active, load<Float>(t_max), splat<Float>(-kInfinity));
         largest = hmax(lanes);
     }
 };

@@ -248,6 +248,13 @@ mutant shade-lanes-pattern-of-lane-zero core/tracer.cpp \
     'for (int lane = 0; lane < kPacketWidth; ++lane) rows[lane] = &v[lane < n ? lane : 0].x;' \
     'for (int lane = 0; lane < kPacketWidth; ++lane) rows[lane] = &v[0].x;' \
     rt_tests $(unit 'ShadeFound.*')
+mutant select-bits-swapped core/simd.h \
+    '_mm256_mask_blend_ps(static_cast<__mmask8>(mask), b, a)' \
+    '_mm256_mask_blend_ps(static_cast<__mmask8>(mask), a, b)' \
+    rt_tests $(unit 'Simd.*')
+mutant packet-triangles-limit-not-lowered core/triangle_packet.h \
+    'limit = select_bits(candidates, t, limit);' '' \
+    rt_tests $(unit 'TrianglePacket.*:EveryKind/PacketTest.*')
 mutant transpose-rows-upper-half-repeats-the-lower core/simd.h \
     '_mm_loadu_ps(rows[k + 4]), 1);' '_mm_loadu_ps(rows[k]), 1);' \
     rt_tests $(unit 'Simd.*')
@@ -503,8 +510,8 @@ mutant packet-triangles-error-bound-unscaled core/triangle_packet.h \
     'watertight_hits(o, r.sz, r.abs_sz, limit, lanes, t)' \
     'watertight_hits(o, r.sz, splat<Float>(1.0f), limit, lanes, t)' \
     rt_tests $(unit 'TrianglePacket.*')
-mutant packet-interval-of-the-first-ray core/wide_bvh_packet.h \
-    'const Ray& r = rays[(active >> lane) & 1u ? lane : first];' 'const Ray& r = rays[first];' \
+mutant packet-interval-of-the-first-ray core/ray_lanes.h \
+    'const Ray& r = rays[(lanes >> k) & 1u ? k : first];' 'const Ray& r = rays[first];' \
     rt_tests $(unit 'EveryKind/PacketTest.*')
 mutant packet-limit-from-lane-zero core/wide_bvh_packet.h \
     'largest = hmax(lanes);' 'largest = lanes[0];' \

@@ -158,6 +158,35 @@ void expect_rows_transposed() {
     }
 }
 
+// select_bits against each lane's bit, for every mask of N lanes; load reads any address.
+template <class V>
+void expect_selected_by_bits() {
+    constexpr int kN = sizeof(V) / sizeof(float);
+    std::array<float, kN + 3> floats;
+    for (int k = 0; k < kN + 3; ++k) floats[k] = 1.5f * static_cast<float>(k) - 7.0f;
+    for (int offset = 0; offset < 4; ++offset) {
+        const V a = load<V>(floats.data() + offset);
+        for (int k = 0; k < kN; ++k) ASSERT_EQ(a[k], floats[k + offset]);
+    }
+    const V a = load<V>(floats.data()), b = splat<V>(-kInfinity);
+    for (unsigned mask = 0; mask < (1u << kN); mask += kN == 16 ? 37u : 1u) {
+        const V chosen = select_bits(mask, a, b);
+        for (int k = 0; k < kN; ++k)
+            ASSERT_EQ(chosen[k], (mask >> k) & 1u ? a[k] : b[k])
+                << "mask " << mask << " lane " << k;
+    }
+}
+
+TEST(Simd, LanesAreChosenByTheirBits) {
+    expect_selected_by_bits<Float4>();
+#if defined(__AVX__)
+    expect_selected_by_bits<Float8>();
+#endif
+#if defined(__AVX512F__)
+    expect_selected_by_bits<Float16>();
+#endif
+}
+
 TEST(Simd, RowsOfFourFloatsAreTransposedIntoLanes) {
     expect_rows_transposed<4>();
 #if defined(__AVX__)
