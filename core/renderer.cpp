@@ -214,10 +214,10 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects
     const unsigned open = all & ~settled;
     if (open == 0) return 0;
     for (unsigned k = open; k != 0; k &= k - 1) hits[__builtin_ctz(k)] = Hit{};
-    std::array<Ray, kPacketWidth> run;  // the Rays only here, where whole-scene tests read them
-    rays.span(rays.index(x, y), static_cast<std::size_t>(n), run.data());
     const int on_edges = std::popcount(whole ? open : all & ~interior);
     if (tiny.crowd) {
+        std::array<Ray, kPacketWidth> run;  // the Rays only here, where the scene's tree reads them
+        rays.span(rays.index(x, y), static_cast<std::size_t>(n), run.data());
         scene.intersect_packet(run.data(), hits, open);
         return on_edges;
     }
@@ -231,8 +231,8 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects
             (is_mesh(scene, around[k]) ? meshes[mesh_count++] : around[kept++]) = around[k];
         count = kept;
     }
-    scene.intersect_among(around.data(), count, run.data(), lanes, hits, open);
-    scene.intersect_among(tiny.objects.data(), tiny.count, run.data(), lanes, hits, open);
+    scene.intersect_among(around.data(), count, lanes, hits, open);
+    scene.intersect_among(tiny.objects.data(), tiny.count, lanes, hits, open);
     if (mesh_count == 0) return on_edges;
     unsigned trusted = 0;  // met what they name, inside its region: as own_ids leaves them
     for (unsigned k = left & open; k != 0; k &= k - 1) {
@@ -240,7 +240,7 @@ int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects
         if (hits[lane].found() && hits[lane].object + 1 == ib.object_id(at + lane))
             trusted |= k & -k;
     }
-    scene.intersect_among(meshes.data(), mesh_count, run.data(), lanes, hits, open & ~trusted);
+    scene.intersect_among(meshes.data(), mesh_count, lanes, hits, open & ~trusted);
     return on_edges;
 }
 

@@ -141,6 +141,17 @@ unsigned Scene::intersect_object_packet(std::uint32_t object, const Ray* rays, H
 
 namespace {
 
+// A shape's test across the rays of `lanes` (core/shape_packets.h), its hits taken into
+// `best`; returns their bits.
+template <class Shape>
+unsigned shape_lanes(const Shape& shape, std::uint32_t object, const RayLanes<kPacketWidth>& r,
+                     unsigned lanes, ClosestLanes& best) {
+    LaneHits<kPacketWidth> out;
+    out.t_max = best.t;
+    const unsigned hit = intersect_lanes(shape, r, lanes, out);
+    return hit != 0 ? best.take(hit, out, object) : 0;
+}
+
 // A shape's test across the rays of `lanes` (core/shape_packets.h); the hits replace
 // the rays' records. Returns their bits.
 template <class Shape>
@@ -205,6 +216,19 @@ unsigned plane_packet(const Plane& p, std::uint32_t object, const Ray* rays, Hit
 
 }  // namespace
 
+unsigned Scene::analytic_lanes(std::uint32_t object, const RayLanes<kPacketWidth>& world,
+                               unsigned lanes, ClosestLanes& best) const {
+    const Object& o = objects[object];
+    RayLanes<kPacketWidth> local;
+    if (o.transform) local = world.to_object(*o.transform);
+    const RayLanes<kPacketWidth>& rays = o.transform ? local : world;
+    if (const auto* plane = std::get_if<Plane>(&o.shape))
+        return shape_lanes(*plane, object, rays, lanes, best);
+    if (const auto* sphere = std::get_if<Sphere>(&o.shape))
+        return shape_lanes(*sphere, object, rays, lanes, best);
+    return shape_lanes(std::get<Triangle>(o.shape), object, rays, lanes, best);
+}
+
 unsigned Scene::intersect_primitive_packet(std::uint32_t object, const std::uint32_t* prims,
                                            const RayLanes<kPacketWidth>& world, Hit* hits,
                                            unsigned lanes, bool fresh) const {
@@ -244,19 +268,34 @@ unsigned Scene::intersect_primitive_packet(std::uint32_t object, const std::uint
     return found;
 }
 
-unsigned Scene::intersect_among(const std::uint32_t* among, int count, const Ray* rays,
-                                const RayLanes<kPacketWidth>& as_lanes, Hit* hits,
+unsigned Scene::intersect_among(const std::uint32_t* among, int count,
+                                const RayLanes<kPacketWidth>& rays, Hit* hits,
                                 unsigned lanes) const {
     lanes &= (1u << kPacketWidth) - 1u;
+    if (lanes == 0) return 0;
     unsigned found = 0;
-    for (int k = 0; k < count && lanes != 0; ++k) {
+    // The rays' closest hits as lanes while planes, spheres and triangles are tested; in
+    // their records while a mesh's tree is walked, with the rays as Rays.
+    std::optional<ClosestLanes> best;
+    std::array<Ray, kPacketWidth> as_rays;
+    bool have_rays = false;
+    for (int k = 0; k < count; ++k) {
         const std::uint32_t object = among[k];
         if (object >= objects.size()) continue;
-        if (std::holds_alternative<MeshRef>(objects[object].shape))
-            found |= intersect_object_packet(object, rays, hits, lanes);  // its own tree
-        else
-            found |= intersect_primitive_packet(object, nullptr, as_lanes, hits, lanes);
+        if (!std::holds_alternative<MeshRef>(objects[object].shape)) {
+            if (!best) best = ClosestLanes::within(hits, lanes);
+            found |= analytic_lanes(object, rays, lanes, *best);
+            continue;
+        }
+        if (best) best->write(hits), best.reset();
+        if (!have_rays) {
+            for (unsigned rest = lanes; rest != 0; rest &= rest - 1)
+                as_rays[__builtin_ctz(rest)] = rays.lane(__builtin_ctz(rest));
+            have_rays = true;
+        }
+        found |= intersect_object_packet(object, as_rays.data(), hits, lanes);  // its own tree
     }
+    if (best) best->write(hits);
     return found;
 }
 

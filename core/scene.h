@@ -64,6 +64,8 @@ struct SceneDescription {
     std::vector<Texture> textures;  // Material::texture indexes them
 };
 
+struct ClosestLanes;  // core/shape_packets.h
+
 class Scene {
   public:
     // Builds every mesh's structure and the one over the objects, with `kind`, and with
@@ -114,14 +116,12 @@ class Scene {
     unsigned occluded_packet(const RayLanes<kPacketWidth>& feelers, const float* t_max,
                              std::size_t light, const std::uint32_t* leaving,
                              unsigned active) const;
-    // The closest hit among `count` objects (indices) for the rays of `lanes` (rays[lane],
-    // hits[lane], each within its hits[lane].t): where a ray's closest object is among
-    // them, the hit intersect() gives. The item buffer's pixels on an edge test the objects
-    // named around them so. The rays are given both ways: `rays` and, as lanes, `as_lanes`.
-    // Returns the bits of those that hit.
-    unsigned intersect_among(const std::uint32_t* objects, int count, const Ray* rays,
-                             const RayLanes<kPacketWidth>& as_lanes, Hit* hits,
-                             unsigned lanes) const;
+    // The closest hit among `count` objects (indices) for the rays of `lanes` (lanes of
+    // `rays`, hits[lane], each within its hits[lane].t): where a ray's closest object is
+    // among them, the hit intersect() gives. The item buffer's pixels on an edge test the
+    // objects named around them so. Returns the bits of those that hit.
+    unsigned intersect_among(const std::uint32_t* objects, int count,
+                             const RayLanes<kPacketWidth>& rays, Hit* hits, unsigned lanes) const;
     // One object alone.
     bool intersect_object(std::uint32_t object, const Ray& r, Hit& hit) const;
     // One object, and of a mesh one triangle alone: what the item buffer names.
@@ -160,6 +160,10 @@ class Scene {
     Aabb object_bounds(const Object& o) const;
 
   private:
+    // A plane's, sphere's or triangle's test (object `object`) for the rays of `lanes`,
+    // its hits taken into `best`; returns their bits.
+    unsigned analytic_lanes(std::uint32_t object, const RayLanes<kPacketWidth>& world,
+                            unsigned lanes, ClosestLanes& best) const;
     unsigned intersect_unbounded_packet(const Ray* rays, Hit* hits, unsigned active) const;
     unsigned intersect_object_packet(std::uint32_t object, const Ray* rays, Hit* hits,
                                      unsigned lanes) const;

@@ -23,6 +23,45 @@ struct LaneHits {
     Float t, b1{}, b2{};  // out (a plane or sphere leaves b1 and b2 zero)
 };
 
+// The closest hit so far of each ray of a packet, as lanes, over the tests of one or
+// more shapes in turn: the rays' bounds are read from their records once and the records
+// of those that hit written once, not once a shape (the item buffer's pixels on an edge,
+// which test every object named around them: Scene::intersect_among). The object's index
+// is kept as the bits of a float lane.
+struct ClosestLanes {
+    using Float = Lanes<kPacketWidth>::Float;
+    Float t, b1{}, b2{}, object;
+    unsigned found = 0;  // the lanes whose hit is here and not yet in their records
+
+    // The rays of `lanes` (one or more) within hits[lane].t.
+    static ClosestLanes within(const Hit* hits, unsigned lanes) {
+        ClosestLanes c;
+        c.t = t_bounds<kPacketWidth>(hits, lanes);
+        return c;
+    }
+
+    // The lanes of `hit` take out's hit on object `id`; returns `hit`.
+    unsigned take(unsigned hit, const LaneHits<kPacketWidth>& out, std::uint32_t id) {
+        t = select_bits(hit, out.t, t);
+        b1 = select_bits(hit, out.b1, b1);
+        b2 = select_bits(hit, out.b2, b2);
+        object = select_bits(hit, splat<Float>(std::bit_cast<float>(id)), object);
+        found |= hit;
+        return hit;
+    }
+
+    Hit lane(int k) const {
+        return Hit{t[k], std::bit_cast<std::uint32_t>(object[k]), 0, b1[k], b2[k]};
+    }
+    // The records of the lanes found, each written whole.
+    void write(Hit* hits) const {
+        for (unsigned rest = found; rest != 0; rest &= rest - 1) {
+            const int k = __builtin_ctz(rest);
+            hits[k] = lane(k);
+        }
+    }
+};
+
 namespace detail {
 
 using LaneFloat = Lanes<kPacketWidth>::Float;

@@ -428,15 +428,15 @@ mutant shared-ids-written-by-lines app/gl/raster_renderer.cpp \
     'if (drawing_ids_) drawing_ids_->draw_ids(false);' '' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*TheColourPassDrawsTheSameItemBuffer*'
 mutant edge-run-trusts-any-hit core/renderer.cpp \
-    'if (hits[lane].found() && hits[lane].object + 1 == ib.object_id(at + lane)) trusted |= k & -k;' \
-    'if (hits[lane].found()) trusted |= k & -k;' \
+    'if (hits[lane].found() && hits[lane].object + 1 == ib.object_id(at + lane))' \
+    'if (hits[lane].found())' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant edge-run-leaves-the-meshes-out core/renderer.cpp \
     'if (mesh_count == 0) return on_edges;' 'return on_edges;' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant edge-run-tests-only-the-edge core/renderer.cpp \
-    'scene.intersect_among(around.data(), count, run.data(), lanes, hits, open);' \
-    'scene.intersect_among(around.data(), count, run.data(), lanes, hits, open & ~left);' \
+    'scene.intersect_among(around.data(), count, lanes, hits, open);' \
+    'scene.intersect_among(around.data(), count, lanes, hits, open & ~left);' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant whole-packet-misses-named core/scene.cpp \
     'hits[lane].object = on ? object : kNoObject;' 'hits[lane].object = object;' \
@@ -667,9 +667,27 @@ mutant triangle-ids-packed-past-their-bits app/gl/framebuffer.cpp \
 mutant triangle-ids-read-though-not-drawn app/gl/framebuffer.cpp \
     'for (int k = 0; k < (ids_.second_target() ? 2 : 1); ++k) {' 'for (int k = 0; k < 2; ++k) {' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*TriangleOfAMesh*:*SameItemBuffer*:*PackedIds*'
-mutant item-buffer-edges-take-their-hits-as-fresh core/scene.h \
-    'unsigned lanes, bool fresh = false) const;' 'unsigned lanes, bool fresh = true) const;' \
+# An edge's list of objects (Scene::intersect_among): the closest hits kept as lanes.
+mutant item-buffer-edges-take-their-hits-as-fresh core/shape_packets.h \
+    'c.t = t_bounds<kPacketWidth>(hits, lanes);' 'c.t = splat<Float>(kInfinity);' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
+mutant among-object-not-taken core/shape_packets.h \
+    'object = select_bits(hit, splat<Float>(std::bit_cast<float>(id)), object);' \
+    'object = splat<Float>(std::bit_cast<float>(id));' \
+    rt_tests $(unit 'ScenePackets.*')
+mutant among-barycentrics-swapped core/shape_packets.h \
+    'b1 = select_bits(hit, out.b1, b1);' 'b1 = select_bits(hit, out.b2, b1);' \
+    rt_tests $(unit 'ScenePackets.*')
+mutant among-mesh-before-the-shapes-written core/scene.cpp \
+    'if (best) best->write(hits), best.reset();' 'if (best) best.reset();' \
+    rt_tests $(unit 'ScenePackets.*')
+mutant among-shapes-after-a-mesh-keep-old-bounds core/scene.cpp \
+    'if (best) best->write(hits), best.reset();' 'if (best) best->write(hits);' \
+    rt_tests $(unit 'ScenePackets.*')
+mutant among-mesh-rays-of-the-first-lane core/scene.cpp \
+    'as_rays[__builtin_ctz(rest)] = rays.lane(__builtin_ctz(rest));' \
+    'as_rays[__builtin_ctz(rest)] = rays.lane(__builtin_ctz(lanes));' \
+    rt_tests $(unit 'ScenePackets.*')
 mutant item-buffer-fresh-hit-keeps-no-object core/scene.cpp \
     '            hits[lane].object = object;' '' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')

@@ -190,6 +190,64 @@ TEST(ScenePackets, NamedPrimitivesGiveEachRayItsOwnHit) {
     EXPECT_GT(hits, 750 * kW);  // kW rays a packet: 8, or 4 under SSE2
 }
 
+// An edge's pixels test a list of objects (Scene::intersect_among): any kinds, in any
+// order, some rays already holding a hit nearer or farther than the objects'. Each ray
+// gets what testing the objects one by one, alone, gives it (the triangle's weights and a
+// mesh's triangle where they belong to the hit), and the rays not asked keep their record.
+TEST(ScenePackets, AListOfObjectsGivesEachRayTheClosestHitAmongThem) {
+    const Scene scene = every_kind_scene();
+    const auto count = static_cast<std::uint32_t>(scene.objects.size());
+    std::mt19937 rng(53);
+    int hits = 0, kept = 0;
+    for (int i = 0; i < 3000; ++i) {
+        std::array<std::uint32_t, 8> among;
+        const int n = 1 + static_cast<int>(rng() % among.size());
+        for (int k = 0; k < n; ++k) among[k] = static_cast<std::uint32_t>(rng()) % count;
+        std::array<Ray, kW> rays;
+        std::array<Hit, kW> before;
+        const vec3 eye = vec3(0, 1, 9) + random_in(rng, 1.0f);
+        for (int k = 0; k < kW; ++k) {
+            const Aabb box = scene.object_bounds(scene.objects[among[rng() % n]]);
+            const vec3 centre = box.empty() ? vec3(0, -2, 0) : 0.5f * (box.lo + box.hi);
+            rays[k] = Ray{eye, centre + random_in(rng, 1.2f) - eye};
+            if (rng() % 3 == 0)  // an earlier hit, somewhere along the ray
+                before[k] = Hit{std::uniform_real_distribution<float>(4.0f, 14.0f)(rng),
+                                count + 1, 7, 0.25f, 0.5f};
+        }
+        const unsigned lanes = (static_cast<unsigned>(rng()) & kAll) | 1u;
+        std::array<Hit, kW> together = before;
+        const unsigned found = scene.intersect_among(
+            among.data(), n, RayLanes<kW>::gather(rays.data(), kAll), together.data(), lanes);
+        for (int k = 0; k < kW; ++k) {
+            if (!((lanes >> k) & 1u)) {
+                ASSERT_EQ(0, std::memcmp(&together[k], &before[k], sizeof(Hit))) << i << " " << k;
+                continue;
+            }
+            Hit alone = before[k];
+            bool hit = false;
+            for (int j = 0; j < n; ++j) hit |= scene.intersect_object(among[j], rays[k], alone);
+            ASSERT_EQ(((found >> k) & 1u) != 0, hit) << i << " " << k;
+            ASSERT_EQ(together[k].t, alone.t) << i << " " << k;
+            ASSERT_EQ(together[k].object, alone.object) << i << " " << k;
+            if (!hit) {
+                ++kept;
+                continue;
+            }
+            ++hits;
+            const auto& shape = scene.objects[alone.object].shape;
+            if (std::holds_alternative<MeshRef>(shape)) {
+                ASSERT_EQ(together[k].prim, alone.prim) << i << " " << k;
+            }
+            if (std::holds_alternative<MeshRef>(shape) || std::holds_alternative<Triangle>(shape)) {
+                ASSERT_EQ(together[k].b1, alone.b1) << i << " " << k;
+                ASSERT_EQ(together[k].b2, alone.b2) << i << " " << k;
+            }
+        }
+    }
+    EXPECT_GT(hits, 1000 * kW);
+    EXPECT_GT(kept, 100 * kW);
+}
+
 // `ib` (ids and triangles apart) with its triangles packed below the object ids, as the
 // raster's one target holds them where they fit, or with the objects alone (`bits` 0: the
 // triangles dropped, as for a scene without a mesh).
