@@ -193,16 +193,19 @@ unsigned TriangleMesh::intersect_triangles_packet(const std::uint32_t* prims,
         }
         return found;
     }
-    // Each ray's own triangle, read from its pack, as the lanes.
-    Float v[3][3];
+    // Each ray's own triangle as the lanes: its corners (the very floats its pack holds)
+    // read as rows of three from the positions and transposed, not a float at a time into
+    // lanes that are then read as vectors (each vector's load waited on eight stores).
+    static_assert(sizeof(vec3) == 3 * sizeof(float));
+    std::array<const float*, kPacketWidth> corners[3];
     for (int lane = 0; lane < kPacketWidth; ++lane) {
-        const bool active = ((lanes >> lane) & 1u) != 0;
-        const std::uint32_t at = prim_lane_[active ? prims[lane] : first];
-        const Triangle4& pack = packs_[at / kTriangle4Lanes];
-        const std::uint32_t j = at % kTriangle4Lanes;
+        const glm::uvec3& corner = triangles[((lanes >> lane) & 1u) != 0 ? prims[lane] : first];
         for (int vertex = 0; vertex < 3; ++vertex)
-            for (int axis = 0; axis < 3; ++axis) v[vertex][axis][lane] = pack.v[vertex][axis][j];
+            corners[vertex][lane] = &positions[corner[vertex]].x;
     }
+    Float v[3][4];
+    for (int vertex = 0; vertex < 3; ++vertex)
+        transpose_rows<kPacketWidth, 3>(corners[vertex].data(), v[vertex]);
     const Float limit = t_bounds<kPacketWidth>(hits, lanes);
     const auto rel = [&](int vertex, int axis) { return v[vertex][axis] - together.origin[axis]; };
     Float t, b1, b2;

@@ -194,15 +194,38 @@ template <class V>
     }
 }
 
-// Lane k of out[c] is rows[k][c]: N rows of four floats, transposed (N = 4 or 8). Each
-// row is read as one unaligned vector under SSE and AVX, else float by float.
-template <int N>
+#if defined(__SSE__)
+// A row of Floats floats (3 or 4) as a vector, the lanes beyond it zero. Three are read
+// without touching the fourth (the last vertex of an array has none after it): a load
+// under a mask, where masked lanes cannot fault, else a pair and a single.
+template <int Floats>
+[[gnu::always_inline]] inline __m128 load_row(const float* p) {
+    static_assert(Floats == 3 || Floats == 4);
+    if constexpr (Floats == 4) {
+        return _mm_loadu_ps(p);
+    } else {
+#if defined(__AVX512VL__)
+        return _mm_maskz_loadu_ps(0x7, p);
+#elif defined(__AVX__)
+        return _mm_maskload_ps(p, _mm_setr_epi32(-1, -1, -1, 0));
+#else
+        return _mm_movelh_ps(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p))),
+                             _mm_load_ss(p + 2));
+#endif
+    }
+}
+#endif
+
+// Lane k of out[c] is rows[k][c]: N rows of Floats floats (4, or 3 with out[3] zero),
+// transposed (N = 4 or 8). Each row is read as one vector under SSE and AVX (load_row),
+// else float by float.
+template <int N, int Floats = 4>
 inline void transpose_rows(const float* const* rows, typename Lanes<N>::Float (&out)[4]) {
 #if defined(__AVX__)
     if constexpr (N == 8) {
         const auto pair = [&](int k) {  // rows k and k + 4: lanes k of each half
-            return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rows[k])),
-                                        _mm_loadu_ps(rows[k + 4]), 1);
+            return _mm256_insertf128_ps(_mm256_castps128_ps256(load_row<Floats>(rows[k])),
+                                        load_row<Floats>(rows[k + 4]), 1);
         };
         const __m256 r04 = pair(0), r15 = pair(1), r26 = pair(2), r37 = pair(3);
         const __m256 lo01 = _mm256_unpacklo_ps(r04, r15), hi01 = _mm256_unpackhi_ps(r04, r15);
@@ -216,15 +239,15 @@ inline void transpose_rows(const float* const* rows, typename Lanes<N>::Float (&
 #endif
 #if defined(__SSE__)
     if constexpr (N == 4) {
-        __m128 r0 = _mm_loadu_ps(rows[0]), r1 = _mm_loadu_ps(rows[1]);
-        __m128 r2 = _mm_loadu_ps(rows[2]), r3 = _mm_loadu_ps(rows[3]);
+        __m128 r0 = load_row<Floats>(rows[0]), r1 = load_row<Floats>(rows[1]);
+        __m128 r2 = load_row<Floats>(rows[2]), r3 = load_row<Floats>(rows[3]);
         _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
         out[0] = r0, out[1] = r1, out[2] = r2, out[3] = r3;
         return;
     }
 #endif
     for (int k = 0; k < N; ++k)
-        for (int c = 0; c < 4; ++c) out[c][k] = rows[k][c];
+        for (int c = 0; c < 4; ++c) out[c][k] = c < Floats ? rows[k][c] : 0.0f;
 }
 
 // The smallest and the largest lane, in log2(lanes) steps (no lane may be NaN).

@@ -256,8 +256,14 @@ mutant packet-triangles-limit-not-lowered core/triangle_packet.h \
     'limit = select_bits(candidates, t, limit);' '' \
     rt_tests $(unit 'TrianglePacket.*:EveryKind/PacketTest.*')
 mutant transpose-rows-upper-half-repeats-the-lower core/simd.h \
-    '_mm_loadu_ps(rows[k + 4]), 1);' '_mm_loadu_ps(rows[k]), 1);' \
+    'load_row<Floats>(rows[k + 4]), 1);' 'load_row<Floats>(rows[k]), 1);' \
     rt_tests $(unit 'Simd.*')
+mutant load-row-of-three-reads-four core/simd.h \
+    'return _mm_maskz_loadu_ps(0x7, p);' 'return _mm_loadu_ps(p);' \
+    rt_tests $(unit 'Simd.*')
+mutant packet-triangles-corners-of-the-first-ray core/mesh_packet.cpp \
+    'triangles[((lanes >> lane) & 1u) != 0 ? prims[lane] : first];' 'triangles[first];' \
+    rt_tests $(unit 'ScenePackets.*:ItemBuffer.*')
 mutant plane-lanes-not-back-on-the-plane core/scene.cpp \
     'p = p - normal * (dot(p, normal) - splat<Float>(plane->offset));' '' \
     rt_tests $(unit 'ShadeFound.*')

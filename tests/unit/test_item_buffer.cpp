@@ -211,8 +211,8 @@ TEST(ScenePackets, AListOfObjectsGivesEachRayTheClosestHitAmongThem) {
             const vec3 centre = box.empty() ? vec3(0, -2, 0) : 0.5f * (box.lo + box.hi);
             rays[k] = Ray{eye, centre + random_in(rng, 1.2f) - eye};
             if (rng() % 3 == 0)  // an earlier hit, somewhere along the ray
-                before[k] = Hit{std::uniform_real_distribution<float>(4.0f, 14.0f)(rng),
-                                count + 1, 7, 0.25f, 0.5f};
+                before[k] = Hit{std::uniform_real_distribution<float>(4.0f, 14.0f)(rng), count + 1,
+                                7, 0.25f, 0.5f};
         }
         const unsigned lanes = (static_cast<unsigned>(rng()) & kAll) | 1u;
         std::array<Hit, kW> together = before;

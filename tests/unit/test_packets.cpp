@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -136,7 +137,7 @@ TEST(Simd, ComparisonsAsBitsAreTheScalarOperatorsLaneByLane) {
 }
 
 // Rows of four floats from anywhere (here one array, in a shuffled order, rows
-// overlapping), transposed: lane k of column c is row k's float c.
+// overlapping), transposed: lane k of column c is row k's float c; then rows of three.
 template <int N>
 void expect_rows_transposed() {
     std::mt19937 rng(17);
@@ -154,6 +155,20 @@ void expect_rows_transposed() {
             const Vec3Lanes<N> v = Vec3Lanes<N>::transpose(rows, first);
             for (int k = 0; k < N; ++k)
                 ASSERT_EQ(v.get(k), vec3(rows[k][first], rows[k][first + 1], rows[k][first + 2]));
+        }
+    }
+    // Rows of three (a mesh's vertices), the last at the very end of its array (under
+    // the sanitizers, a fourth float read would be caught): the fourth column is zero.
+    const std::vector<vec3> points = {{1, 2, 3}, {4, 5, 6}, {-7, 8.5f, -9}};
+    for (int round = 0; round < 20; ++round) {
+        std::array<const float*, N> rows;
+        for (int k = 0; k < N; ++k) rows[k] = &points[rng() % points.size()].x;
+        rows[round % N] = &points.back().x;
+        typename Lanes<N>::Float columns[4];
+        transpose_rows<N, 3>(rows.data(), columns);
+        for (int k = 0; k < N; ++k) {
+            for (int c = 0; c < 3; ++c) ASSERT_EQ(columns[c][k], rows[k][c]) << k << ", " << c;
+            ASSERT_EQ(columns[3][k], 0.0f) << k;
         }
     }
 }
