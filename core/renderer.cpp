@@ -365,6 +365,12 @@ void shade_tile(const Pass& p, const Tracer& tracer, const Tile& t, const TileRa
     if (n > 0) shade();
 }
 
+struct TileArrays {
+    TileRays rays;
+    std::vector<Hit> hits;
+    std::vector<Ray> tile_rays;
+};
+
 // Each tile takes all its samples before the next tile, in one pass over the image: per
 // sample, the first hits of the tile's pixels (from the item buffer where there is one),
 // then their shading. The rays and hits of a tile stay in the cache (a frame-sized buffer
@@ -385,9 +391,15 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
         const Tracer mine = p.tracer;
         const int w = t.x1 - t.x0;
         const std::size_t n = static_cast<std::size_t>(w) * (t.y1 - t.y0);
-        TileRays rays(t);
-        std::vector<Hit> hits(n);
-        std::vector<Ray> tile_rays(p.item_buffer ? 0 : n);  // without the item buffer
+        // Each worker thread's arrays, kept from tile to tile (every step writes what it
+        // reads: the rays made, the hits reset): made for each tile, their eight
+        // allocations and fresh hits cost the frame 1-7 % (whitted 0.988x, tutorial 0.93x
+        // reused, frames in turns).
+        thread_local TileArrays arrays;
+        TileRays& rays = arrays.rays;
+        std::vector<Hit>& hits = arrays.hits;
+        hits.resize(n);
+        std::vector<Ray>& tile_rays = arrays.tile_rays;  // without the item buffer
         double primary = 0.0, shade = 0.0;
         std::uint64_t fell = 0;
         for (int s = 0; s < p.spp; ++s) {

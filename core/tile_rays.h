@@ -25,6 +25,8 @@ namespace rt::detail {
 // (jittered, pixel_sample) are made and kept per pixel.
 class TileRays {
   public:
+    // Empty: make() sizes its arrays, allocating only for a tile larger than any before.
+    TileRays() = default;
     // Its arrays sized for tile t up front: make() then allocates nothing, so the time of
     // the primary step is the rays' own.
     explicit TileRays(const Tile& t)
