@@ -199,8 +199,9 @@ unsigned own_ids(const Scene& scene, const ItemBuffer& ib, std::size_t at, int n
 // where 29 % of the runs have an edge: the step took 18 % less); a mesh, a traversal of
 // its own tree, only for the pixels on the edge and those still without a hit. Returns
 // how many pixels were on an edge or missed.
-int item_buffer_run(const Scene& scene, const ItemBuffer& ib, const SmallObjects& small,
-                    const TileRays& rays, int x, int y, int n, Hit* hits) {
+[[gnu::always_inline]] inline int item_buffer_run(const Scene& scene, const ItemBuffer& ib,
+                                                  const SmallObjects& small, const TileRays& rays,
+                                                  int x, int y, int n, Hit* hits) {
     const RayLanes<kPacketWidth> lanes = rays.lanes(x, y, n);
     const unsigned all = (1u << n) - 1u;
     reset_hits(hits, static_cast<std::size_t>(n));
