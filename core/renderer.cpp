@@ -312,6 +312,7 @@ namespace {
 struct Pass {
     const Scene& scene;
     const Camera& camera;
+    const detail::CameraTerms& terms;  // the camera's rays' terms, once a frame
     const Tracer& tracer;
     int spp;
     const ItemBuffer* item_buffer;
@@ -405,7 +406,7 @@ bool render_by_tile(const Pass& p, TileRunner& runner, std::stop_token stop, Ray
         std::uint64_t fell = 0;
         for (int s = 0; s < p.spp; ++s) {
             Stopwatch lap;
-            rays.make(p.camera, t, s, p.spp);
+            rays.make(p.terms, t, s, p.spp);
             if (p.item_buffer)
                 fell += item_buffer_hits(p.scene, *p.item_buffer, p.small, t, rays, hits);
             else
@@ -452,7 +453,9 @@ Image render(const Scene& scene, const Camera& camera, const RenderOptions& opti
     const Tracer tracer(scene, options.trace);
     const Stopwatch watch;
     const SmallObjects small = item_buffer ? SmallObjects(scene, camera) : SmallObjects();
-    const Pass pass{scene, camera, tracer, spp, item_buffer, small, image, nonfinite, fallbacks};
+    const detail::CameraTerms terms(camera);
+    const Pass pass{scene,       camera, terms, tracer,    spp,
+                    item_buffer, small,  image, nonfinite, fallbacks};
     RenderStats times;
     const bool complete = render_by_tile(pass, runner, stop, counts, times);
     if (stats) {

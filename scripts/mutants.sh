@@ -472,9 +472,17 @@ mutant tile-rays-remainder-left-out core/tile_rays.h \
     'for (std::size_t k = 4 * whole + 1; k < n; ++k)' \
     rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
 mutant tile-rays-span-starts-at-the-row core/tile_rays.h \
-    'reinterpret_cast<const Chunk*>(&row_start_[6 * column]);' \
-    'reinterpret_cast<const Chunk*>(&row_start_[0]);' \
+    'reinterpret_cast<const Chunk*>(terms_->row_start(x));' \
+    'reinterpret_cast<const Chunk*>(terms_->row_start(0));' \
     rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
+mutant tile-rays-span-from-the-images-edge core/tile_rays.h \
+    'write_run(terms_->row(t_.y0 + static_cast<int>(row)), t_.x0 + static_cast<int>(column),' \
+    'write_run(terms_->row(t_.y0 + static_cast<int>(row)), static_cast<int>(column),' \
+    rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
+mutant tile-rays-lanes-from-the-tiles-column core/tile_rays.h \
+    'std::memcpy(&c, terms_->columns_along(a, x), sizeof c);' \
+    'std::memcpy(&c, terms_->columns_along(a, x - t_.x0), sizeof c);' \
+    rt_tests $(unit 'ItemBuffer.*')
 mutant tile-rays-span-stays-in-its-row core/tile_rays.h \
     '            column = 0;
             ++row;' '            column = 0;' \

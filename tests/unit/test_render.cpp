@@ -65,9 +65,10 @@ TEST(Render, ATilesRaysAreTheCamerasRaysBitForBit) {
     for (int width = 1; width <= 19; ++width) {
         for (const int x0 : {0, 5, 97 - width}) {
             const detail::Tile t{x0, 3, x0 + width, 9};
-            detail::TileRays rays(t);
+            const detail::CameraTerms terms(camera);
+            detail::TileRays rays;
             for (const int spp : {1, 4}) {
-                rays.make(camera, t, 2, spp);
+                rays.make(terms, t, 2, spp);
                 std::vector<Ray> expected;
                 for (int y = t.y0; y < t.y1; ++y)
                     for (int x = t.x0; x < t.x1; ++x) {
