@@ -487,6 +487,10 @@ mutant tile-rays-span-stays-in-its-row core/tile_rays.h \
     '            column = 0;
             ++row;' '            column = 0;' \
     rt_tests $(unit 'Render.ATilesRaysAreTheCamerasRaysBitForBit')
+# A tile's first sample is written to its pixels, the others added (core/renderer.cpp).
+mutant every-sample-written-over-the-last core/renderer.cpp \
+    'if (s == 0)' 'if (s >= 0)' \
+    rt_tests $(unit 'Sampling.*')
 mutant tile-rays-shading-ray-of-the-next-row core/renderer.cpp \
     'found_rays[n] = rays.ray(x, y);' 'found_rays[n] = rays.ray(x, std::min(y + 1, t.y1 - 1));' \
     rt_tests $(unit 'Render.EveryPixelIsItsCentresRayTracedAlone')
