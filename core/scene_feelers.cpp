@@ -48,6 +48,15 @@ bool Scene::occluded(const Ray& feeler, float t_max, std::size_t light,
 
 namespace {
 
+// The feelers in o's own space, as object_ray gives each alone: `world` itself where o
+// has no transform, else `world` moved into `moved`.
+const RayLanes<kPacketWidth>& object_lanes(const Object& o, const RayLanes<kPacketWidth>& world,
+                                           RayLanes<kPacketWidth>& moved) {
+    if (!o.transform) return world;
+    moved = world.to_object(*o.transform);
+    return moved;
+}
+
 // An analytic shape's test of the feelers of `lanes` (`world`, in the object's space
 // where it has a transform) on the lanes: each lane's arithmetic is the shape's own
 // (core/shape_packets.h), so each gets the answer it gets alone.
@@ -58,24 +67,43 @@ unsigned analytic_occluded(const Object& o, const RayLanes<kPacketWidth>& world,
     for (unsigned rest = lanes; rest != 0; rest &= rest - 1)
         out.t_max[__builtin_ctz(rest)] = t_max[__builtin_ctz(rest)];
     RayLanes<kPacketWidth> moved;
-    if (o.transform) moved = world.to_object(*o.transform);
-    const RayLanes<kPacketWidth>& local = o.transform ? moved : world;
+    const RayLanes<kPacketWidth>& local = object_lanes(o, world, moved);
     return std::visit(
         Overloaded{[](const MeshRef&) { return 0u; },  // not asked
                    [&](const auto& shape) { return intersect_lanes(shape, local, lanes, out); }},
         o.shape);
 }
 
+// A mesh's test of the feelers of `lanes`, together through its tree (in the object's
+// space where it has a transform: each lane the ray Transform::to_object gives).
+unsigned mesh_occluded(const Object& o, const TriangleMesh& mesh,
+                       const RayLanes<kPacketWidth>& world, const float* t_max, unsigned lanes) {
+    RayLanes<kPacketWidth> moved;
+    const RayLanes<kPacketWidth>& local = object_lanes(o, world, moved);
+    std::array<Ray, kPacketWidth> rays;
+    for (unsigned rest = lanes; rest != 0; rest &= rest - 1) {
+        const int lane = __builtin_ctz(rest);
+        rays[lane] = local.lane(lane);
+    }
+    return mesh.occluded_packet(rays.data(), t_max, lanes);
+}
+
 }  // namespace
 
-// Two or more feelers meeting a plane, sphere or triangle are tested on the lanes. A
-// mesh's go through its tree one by one: as a packet they were slower (cornell, whose
-// feelers all start on its one mesh: 6 % of the frame, BENCHMARKS.md).
+// Two or more feelers meeting an object are tested together: a plane, sphere or triangle
+// on the lanes, a mesh's as a packet through its tree. The mesh's packets were once
+// slower than its feelers one by one (cornell, whose every feeler starts on its one mesh:
+// 6 % of the frame, BENCHMARKS.md); since the leaves test a packet's rays across a
+// triangle's lanes they are not (frames 0.94-0.96x whitted, 0.92x textured, 0.95x
+// many_spheres, 0.99-1.00x cornell, BENCHMARKS.md "twenty-ninth session").
 unsigned Scene::occluded_by_packet(std::uint32_t object, const RayLanes<kPacketWidth>& feelers,
                                    const float* t_max, unsigned lanes) const {
     const Object& o = objects[object];
-    if (!std::holds_alternative<MeshRef>(o.shape) && std::popcount(lanes) >= 2)
-        return analytic_occluded(o, feelers, t_max, lanes);
+    if (std::popcount(lanes) >= 2) {
+        const auto* mesh = std::get_if<MeshRef>(&o.shape);
+        return mesh ? mesh_occluded(o, meshes[mesh->mesh], feelers, t_max, lanes)
+                    : analytic_occluded(o, feelers, t_max, lanes);
+    }
     unsigned blocked = 0;
     for (; lanes != 0; lanes &= lanes - 1) {
         const unsigned lane = __builtin_ctz(lanes);

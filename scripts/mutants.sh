@@ -589,8 +589,15 @@ mutant feeler-packet-skips-the-planes core/scene_feelers.cpp \
     'blocked |= occluded_by_packet(i, feelers, t_max, lanes);' '(void)lanes;' \
     rt_tests $(unit 'ShadowFeelers.*')
 mutant feeler-packet-shape-lanes-unmoved core/scene_feelers.cpp \
-    'const RayLanes<kPacketWidth>& local = o.transform ? moved : world;' \
-    'const RayLanes<kPacketWidth>& local = world;' \
+    'if (!o.transform) return world;' 'return world;' \
+    rt_tests $(unit 'ShadowFeelers.*')
+mutant feeler-packet-mesh-drops-a-feeler core/scene_feelers.cpp \
+    'return mesh.occluded_packet(rays.data(), t_max, lanes);' \
+    'return mesh.occluded_packet(rays.data(), t_max, lanes & (lanes - 1));' \
+    rt_tests $(unit 'ShadowFeelers.*')
+mutant feeler-packet-mesh-as-a-shape core/scene_feelers.cpp \
+    'return mesh ? mesh_occluded(o, meshes[mesh->mesh], feelers, t_max, lanes)' \
+    'return false ? mesh_occluded(o, meshes[mesh->mesh], feelers, t_max, lanes)' \
     rt_tests $(unit 'ShadowFeelers.*')
 mutant feeler-packet-shape-lanes-unbounded core/scene_feelers.cpp \
     'out.t_max[__builtin_ctz(rest)] = t_max[__builtin_ctz(rest)];' \
