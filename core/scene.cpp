@@ -1,6 +1,7 @@
 #include "core/scene.h"
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstring>
 #include <optional>
@@ -307,11 +308,22 @@ unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) co
         const unsigned lane = __builtin_ctz(rest);
         t_max[lane] = hits[lane].t;
     }
+    // A plane, sphere or triangle that two or more of the rays meet tests them on the
+    // lanes (the rays gathered into lanes at the first such object), not one by one.
+    std::optional<RayLanes<kPacketWidth>> as_lanes;
     top_.traverse_packet<false>(
         rays, t_max.data(), active, [&](std::uint32_t first, std::uint32_t count, unsigned lanes) {
             unsigned hit = 0;
-            for (std::uint32_t slot = first; slot < first + count; ++slot)
-                hit |= intersect_object_packet(bounded_[slot], rays, hits, lanes);
+            for (std::uint32_t slot = first; slot < first + count; ++slot) {
+                const std::uint32_t object = bounded_[slot];
+                if (std::popcount(lanes) < 2 ||
+                    std::holds_alternative<MeshRef>(objects[object].shape)) {
+                    hit |= intersect_object_packet(object, rays, hits, lanes);
+                    continue;
+                }
+                if (!as_lanes) as_lanes = RayLanes<kPacketWidth>::gather(rays, active);
+                hit |= intersect_primitive_packet(object, nullptr, *as_lanes, hits, lanes);
+            }
             for (unsigned rest = hit; rest != 0; rest &= rest - 1) {
                 const unsigned lane = __builtin_ctz(rest);
                 t_max[lane] = hits[lane].t;  // the traversal's bound follows each hit

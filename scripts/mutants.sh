@@ -579,6 +579,14 @@ mutant light-buffer-lanes-face-sign core/light_buffer.cpp \
 mutant light-buffer-lanes-ties-to-y core/light_buffer.cpp \
     'const auto on_x = (ax >= ay) & (ax >= az);' 'const auto on_x = (ax > ay) & (ax >= az);' \
     rt_tests $(unit 'LightBuffer.*')
+mutant top-tree-lanes-take-no-bound core/scene.cpp \
+    'hit |= intersect_primitive_packet(object, nullptr, *as_lanes, hits, lanes);' \
+    'hit |= intersect_primitive_packet(object, nullptr, *as_lanes, hits, lanes, true);' \
+    rt_tests $(unit 'ScenePackets.*')
+mutant top-tree-lanes-of-the-first-ray core/scene.cpp \
+    'as_lanes = RayLanes<kPacketWidth>::gather(rays, active);' \
+    'as_lanes = RayLanes<kPacketWidth>::gather(rays, active & -active);' \
+    rt_tests $(unit 'ScenePackets.*')
 mutant feeler-packet-one-cell-for-all core/scene_feelers.cpp \
     'cells[k].begin == cell.begin && cells[k].end == cell.end)' 'true)' \
     rt_tests $(unit 'ShadowFeelers.*')
