@@ -334,11 +334,10 @@ unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) co
     return found;
 }
 
-SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
+void Scene::surface(const Ray& r, const Hit& hit, SurfacePoint& sp) const {
     const Object& o = objects[hit.object];
     Ray moved;
     const Ray& local = object_ray(o, r, moved);
-    SurfacePoint sp;
     Convex convex = Convex::kNo;
     const LocalSurface ls = visit_shape(o, [&](const auto& shape) {
         using Kind = std::decay_t<decltype(shape)>;
@@ -372,12 +371,11 @@ SurfacePoint Scene::surface(const Ray& r, const Hit& hit) const {
     sp.p = p;
     const bool front_face = glm::dot(r.dir, ng) < 0.0f;
     sp.geometric_normal = front_face ? ng : -ng;
-    if (convex == Convex::kFlat || (convex == Convex::kOutside && front_face))
-        sp.cannot_meet_again = hit.object;
+    const bool leaves = convex == Convex::kFlat || (convex == Convex::kOutside && front_face);
+    sp.cannot_meet_again = leaves ? hit.object : kNoObject;
     // An interpolated normal may lean past the silhouette; keep it on the viewer's side.
     ns = front_face ? ns : -ns;
     sp.normal = glm::dot(ns, sp.geometric_normal) > 0.0f ? ns : sp.geometric_normal;
-    return sp;
 }
 
 bool Scene::plane_surfaces(const Ray* rays, const Hit* hits, const std::uint32_t* which, int n,

@@ -137,7 +137,16 @@ class Scene {
                                         const RayLanes<kPacketWidth>& rays, Hit* hits,
                                         unsigned lanes, bool fresh = false) const;
 
-    SurfacePoint surface(const Ray& r, const Hit& hit) const;
+    // The surface point of a hit (r's, of hits[..] from intersect), written into `sp`,
+    // every field: where the caller keeps it (a SurfacePoint returned and copied out was
+    // read back whole over the callee's smaller stores, which the store buffer cannot
+    // forward: 12 % of Tracer::shade_found's samples).
+    void surface(const Ray& r, const Hit& hit, SurfacePoint& sp) const;
+    SurfacePoint surface(const Ray& r, const Hit& hit) const {
+        SurfacePoint sp;
+        surface(r, hit, sp);
+        return sp;
+    }
     // surface for rays[which[k]] and hits[which[k]], k < n (1 to kPacketWidth), where every
     // hit is on one plane without a transform (a floor's run of pixels), across SIMD
     // lanes: bit for bit what surface gives. False, and nothing written, for other hits.

@@ -219,7 +219,7 @@ void Tracer::shade_found(const Ray* rays, const Hit* hits, const std::uint32_t* 
     std::array<vec3, kPacketWidth> local{};
     const bool on_a_plane = scene_.plane_surfaces(rays, hits, which, n, sps.data());
     for (int k = 0; k < n; ++k) {
-        if (!on_a_plane) sps[k] = scene_.surface(rays[which[k]], hits[which[k]]);
+        if (!on_a_plane) scene_.surface(rays[which[k]], hits[which[k]], sps[k]);
         dirs[k] = rays[which[k]].dir;
     }
     phong_lanes(sps.data(), dirs.data(), n, counts, local.data());

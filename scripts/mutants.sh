@@ -579,6 +579,10 @@ mutant light-buffer-lanes-face-sign core/light_buffer.cpp \
 mutant light-buffer-lanes-ties-to-y core/light_buffer.cpp \
     'const auto on_x = (ax >= ay) & (ax >= az);' 'const auto on_x = (ax > ay) & (ax >= az);' \
     rt_tests $(unit 'LightBuffer.*')
+mutant surface-leaves-meeting-again-as-it-was core/scene.cpp \
+    'sp.cannot_meet_again = leaves ? hit.object : kNoObject;' \
+    'if (leaves) sp.cannot_meet_again = hit.object;' \
+    rt_tests $(unit 'Scene.*')
 mutant top-tree-lanes-take-no-bound core/scene.cpp \
     'hit |= intersect_primitive_packet(object, nullptr, *as_lanes, hits, lanes);' \
     'hit |= intersect_primitive_packet(object, nullptr, *as_lanes, hits, lanes, true);' \

@@ -213,6 +213,52 @@ TEST(Scene, APlanesCheckerPointAndNormalsAreTheShapesOwn) {
     EXPECT_GT(balls, 10);
 }
 
+// Scene::surface written into a SurfacePoint that held something else (shade_found's
+// keep what the last run of pixels left) gives, field by field and bit for bit, what the
+// returned one is: every field is written, none left to its default. Every kind of
+// shape: the shipped scenes' planes, spheres (one scaled), meshes and triangles, and
+// rays from inside the glass.
+TEST(Scene, ASurfacePointIsWrittenWholeOverWhatItHeld) {
+    int hits = 0, leaving = 0, staying = 0;
+    for (const char* name : {"whitted.json", "textured.json", "cornell.json"}) {
+        const Scene scene(test::shipped_scene(name, 64, 36));
+        for (int y = 0; y < scene.camera.rows; ++y) {
+            for (int x = 0; x < scene.camera.cols; ++x) {
+                Ray r = scene.camera.ray(x, y);
+                Hit hit;
+                if (!scene.intersect(r, hit)) continue;
+                for (int bounce = 0; bounce < 2; ++bounce) {  // the camera's, then inside
+                    const SurfacePoint returned = scene.surface(r, hit);
+                    SurfacePoint written;
+                    std::memset(static_cast<void*>(&written), 0x7f, sizeof written);
+                    scene.surface(r, hit, written);
+                    const auto same = [](const auto& a, const auto& b) {
+                        return std::memcmp(&a, &b, sizeof a) == 0;
+                    };
+                    ASSERT_TRUE(same(written.p, returned.p) &&
+                                same(written.geometric_normal, returned.geometric_normal) &&
+                                same(written.normal, returned.normal) &&
+                                written.material == returned.material &&
+                                same(written.pattern_point, returned.pattern_point) &&
+                                same(written.uv, returned.uv) &&
+                                same(written.colour, returned.colour) &&
+                                written.cannot_meet_again == returned.cannot_meet_again)
+                        << name << " pixel " << x << "," << y << " bounce " << bounce;
+                    ++hits;
+                    (returned.cannot_meet_again == kNoObject ? staying : leaving) += 1;
+                    // On through the surface: a sphere's or a mesh's far side, from inside.
+                    r = Ray{r.at(hit.t) + 1e-3f * r.dir, r.dir};
+                    hit = Hit{};
+                    if (!scene.intersect(r, hit)) break;
+                }
+            }
+        }
+    }
+    EXPECT_GT(hits, 3000);
+    EXPECT_GT(leaving, 100);
+    EXPECT_GT(staying, 100);
+}
+
 // A mesh's two normals differ: the shading normal is its corners' interpolated, each
 // normalised on its own, with or without a transform.
 TEST(Scene, AMeshHitIsShadedWithItsInterpolatedNormal) {
