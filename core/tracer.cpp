@@ -1,14 +1,10 @@
 #include "core/tracer.h"
 
 #include <algorithm>
-#include <array>
-#include <bit>
 #include <cmath>
 #include <cstddef>
 
 #include <glm/geometric.hpp>
-
-#include "core/vec3_lanes.h"
 
 namespace rt {
 vec3 reflect_dir(const vec3& d, const vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
@@ -188,193 +184,17 @@ void Tracer::record_feeler(const Ray& feeler, float t_max, const Light& light, b
     if (blocked && scene_.intersect(feeler, first)) node.blocker = hit_record(feeler, first);
 }
 
-namespace {
-using ShadeLanes = Vec3Lanes<kPacketWidth>;
-
-// Checker::at across the lanes, the same operations on each.
-ShadeLanes checker_lanes(const Checker& c, const ShadeLanes& p) {
-    using Float = ShadeLanes::Float;
-    const Float scale = splat<Float>(c.scale);
-    const auto parity = [&](Float x) {
-        const Float f = vfloor(x / scale);
-        return f - splat<Float>(2.0f) * vfloor(splat<Float>(0.5f) * f);
-    };
-    const Float sum = parity(p.x) + parity(p.y) + parity(p.z);
-    return select((sum == splat<Float>(0.0f)) | (sum == splat<Float>(2.0f)),
-                  ShadeLanes::splat(c.colour_a), ShadeLanes::splat(c.colour_b));
-}
-}  // namespace
-
-// The local terms of several pixels at once: what phong reads, a pixel to a lane.
-struct Tracer::PhongInputs {
-    ShadeLanes pattern, ka, kd, ks, emission, p, normal, to_viewer;
-    ShadeLanes::Float shininess;
-    ShadeLanes geometric, origin;  // with feelers: the geometric normal, the feelers' origin
-};
-
-void Tracer::shade_found(const Ray* rays, const Hit* hits, const std::uint32_t* which, int n,
-                         RayCounts& counts, vec3* colours) const {
-    std::array<SurfacePoint, kPacketWidth> sps;
-    std::array<vec3, kPacketWidth + 1> dirs{};  // one more: phong_inputs reads a float past each
-    std::array<vec3, kPacketWidth> local{};
-    const bool on_a_plane = scene_.plane_surfaces(rays, hits, which, n, sps.data());
-    for (int k = 0; k < n; ++k) {
-        if (!on_a_plane) scene_.surface(rays[which[k]], hits[which[k]], sps[k]);
-        dirs[k] = rays[which[k]].dir;
-    }
-    phong_lanes(sps.data(), dirs.data(), n, counts, local.data());
-    for (int k = 0; k < n; ++k) {
-        PrimaryParts parts;
-        parts.local = local[k];
-        bounces(rays[which[k]], hits[which[k]], sps[k], Path{}, counts, parts);
-        colours[k] = parts.colour();
-    }
-}
-
-// Lanes past n repeat lane 0. Neighbouring pixels mostly show one material: then its
-// terms are splat, not gathered lane by lane, and a checker (without a texture) is
-// evaluated across the lanes.
-Tracer::PhongInputs Tracer::phong_inputs(const SurfacePoint* sps, const vec3* dirs, int n) const {
-    PhongInputs in;
-    bool one_material = true;
-    for (int k = 1; k < n; ++k) one_material &= sps[k].material == sps[0].material;
-    if (one_material) {
-        const Material& m = scene_.materials[sps[0].material];
-        in.ka = ShadeLanes::splat(m.ka);
-        in.kd = ShadeLanes::splat(m.kd);
-        in.ks = ShadeLanes::splat(m.ks);
-        in.emission = ShadeLanes::splat(m.emission);
-        in.shininess = splat<ShadeLanes::Float>(m.shininess);
-    }
-    const Material& first = scene_.materials[sps[0].material];
-    const bool checker_across = one_material && first.checker && !first.texture;
-    // Each of a SurfacePoint's vectors is followed by another field: a row of four floats.
-    static_assert(offsetof(SurfacePoint, colour) + 4 * sizeof(float) <= sizeof(SurfacePoint));
-    const auto rows_of = [&](const vec3* v) {  // v[0 .. n) with a float after the last
-        std::array<const float*, kPacketWidth> rows;
-        for (int lane = 0; lane < kPacketWidth; ++lane) rows[lane] = &v[lane < n ? lane : 0].x;
-        return ShadeLanes::transpose(rows, 0);
-    };
-    const auto field = [&](vec3 SurfacePoint::*member) {
-        std::array<const float*, kPacketWidth> rows;
-        for (int lane = 0; lane < kPacketWidth; ++lane)
-            rows[lane] = &(sps[lane < n ? lane : 0].*member).x;
-        return ShadeLanes::transpose(rows, 0);
-    };
-    if (checker_across) {
-        in.pattern = checker_lanes(*first.checker, field(&SurfacePoint::pattern_point)) *
-                     field(&SurfacePoint::colour);
-    }
-    std::array<vec3, kPacketWidth + 1> patterns;  // one more: a row of four floats each
-    if (!checker_across || !one_material) {
-        for (int lane = 0; lane < kPacketWidth; ++lane) {
-            const int k = lane < n ? lane : 0;
-            const Material& m = scene_.materials[sps[k].material];
-            if (!checker_across) patterns[lane] = pattern_at(m, sps[k]);
-            if (!one_material) {
-                in.ka.set(lane, m.ka);
-                in.kd.set(lane, m.kd);
-                in.ks.set(lane, m.ks);
-                in.emission.set(lane, m.emission);
-                in.shininess[lane] = m.shininess;
-            }
-        }
-    }
-    if (!checker_across) in.pattern = rows_of(patterns.data());
-    in.p = field(&SurfacePoint::p);
-    in.normal = field(&SurfacePoint::normal);
-    if (options_.shadows) in.geometric = field(&SurfacePoint::geometric_normal);
-    in.to_viewer = -normalize(rows_of(dirs));  // dirs has a float after its last
-    if (options_.shadows) in.origin = offset_ray_origin(in.p, in.geometric);
-    return in;
-}
-
-namespace {
-// Light::feeler's direction from the points `from`, lane by lane.
-ShadeLanes feeler_lanes(const Light& light, const ShadeLanes& from) {
-    return light.type == Light::Type::kPoint ? ShadeLanes::splat(light.position) - from
-                                             : ShadeLanes::splat(-light.direction);
-}
-}  // namespace
-
-// visible for the lanes of `lit` at once (feeler_to's cases, then the scene's test of
-// the feelers together). `towards`: the light's direction from each surface point.
-// Returns the bits of those that see the light.
-unsigned Tracer::visible_lanes(const PhongInputs& in, const ShadeLanes& towards,
-                               const SurfacePoint* sps, unsigned lit, const Light& light,
-                               RayCounts& counts) const {
-    using Float = ShadeLanes::Float;
-    const ShadeLanes dir = feeler_lanes(light, in.origin);
-    const unsigned traced = lit & ~bits(dot(dir, in.geometric) <= splat<Float>(0.0f));
-    const unsigned seen = lit & ~traced & bits(dot(towards, in.geometric) > splat<Float>(0.0f));
-    if (traced == 0) return seen;
-    std::array<std::uint32_t, kPacketWidth> leaving;
-    const float t_max = light.type == Light::Type::kPoint ? 1.0f : kInfinity;  // Light::feeler
-    std::array<float, kPacketWidth> limits;
-    limits.fill(t_max);
-    for (unsigned rest = traced; rest != 0; rest &= rest - 1) {
-        const int k = __builtin_ctz(rest);
-        leaving[k] = sps[k].cannot_meet_again;
-    }
-    counts.shadow += static_cast<std::uint64_t>(std::popcount(traced));
-    const auto index = static_cast<std::size_t>(&light - scene_.lights.data());
-    const RayLanes<kPacketWidth> feelers{{in.origin.x, in.origin.y, in.origin.z},
-                                         {dir.x, dir.y, dir.z}};
-    const unsigned blocked =
-        scene_.occluded_packet(feelers, limits.data(), index, leaving.data(), traced);
-    if (recorder_)
-        for (unsigned rest = traced; rest != 0; rest &= rest - 1) {
-            const int k = __builtin_ctz(rest);
-            record_feeler(feelers.lane(k), t_max, light, ((blocked >> k) & 1u) != 0);
-        }
-    return seen | (traced & ~blocked);
-}
-
-// phong, a pixel to a lane: the same operations in the same order, so each lane's
-// colour is phong's bit for bit. Feelers and powers are taken lane by lane.
-void Tracer::phong_lanes(const SurfacePoint* sps, const vec3* dirs, int n, RayCounts& counts,
-                         vec3* local) const {
-    using Float = ShadeLanes::Float;
-    const PhongInputs in = phong_inputs(sps, dirs, n);
-    const Float zero = splat<Float>(0.0f);
-    ShadeLanes colour = in.emission + in.ka * in.pattern * ShadeLanes::splat(scene_.ambient);
-    const unsigned used = (1u << n) - 1u;
-    for (const Light& light : scene_.lights) {
-        const ShadeLanes towards = feeler_lanes(light, in.p);  // light.feeler(sp.p)
-        const Float distance = vsqrt(dot(towards, towards));
-        const ShadeLanes to_light = towards / distance;
-        const Float n_dot_l = dot(in.normal, to_light);
-        unsigned lit =
-            bits((distance > zero) & (distance < splat<Float>(kInfinity)) & (n_dot_l > zero)) &
-            used;
-        if (options_.shadows && lit != 0) lit = visible_lanes(in, towards, sps, lit, light, counts);
-        if (lit == 0) continue;
-        const ShadeLanes from_light = -to_light;  // reflect_dir(-to_light, normal)
-        const ShadeLanes mirrored =
-            from_light - in.normal * (splat<Float>(2.0f) * dot(from_light, in.normal));
-        const Float r_dot_v = vmax(dot(mirrored, in.to_viewer), zero);
-        Float power = zero;
-        const unsigned shiny = lit & bits(r_dot_v > zero);
-        for (unsigned rest = shiny; rest != 0; rest &= rest - 1) {
-            const int k = __builtin_ctz(rest);
-            power[k] = std::pow(r_dot_v[k], in.shininess[k]);
-        }
-        const ShadeLanes specular =
-            select(ShadeLanes::mask(shiny), in.ks * power, ShadeLanes::splat(vec3(0.0f)));
-        const ShadeLanes term =
-            (in.kd * in.pattern * n_dot_l + specular) * ShadeLanes::splat(light.colour);
-        colour = select(ShadeLanes::mask(lit), colour + term, colour);
-    }
-    for (int k = 0; k < n; ++k) local[k] = colour.get(k);
-}
-
 // `path` is the new ray's: one deeper, its weight, and (a reflection stays on its side
 // of the surface) the media of the ray that arrived.
+Ray Tracer::reflected_ray(const Ray& r, const SurfacePoint& sp) {
+    return Ray{offset_ray_origin(sp.p, sp.geometric_normal),
+               reflect_dir(glm::normalize(r.dir), sp.normal)};
+}
+
 vec3 Tracer::reflected(const Ray& r, const SurfacePoint& sp, const Path& path,
                        RayCounts& counts) const {
     ++counts.reflected;
-    const vec3 d = reflect_dir(glm::normalize(r.dir), sp.normal);
-    return trace(Ray{offset_ray_origin(sp.p, sp.geometric_normal), d}, path, counts);
+    return trace(reflected_ray(r, sp), path, counts);
 }
 
 vec3 Tracer::refracted(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,

@@ -116,7 +116,15 @@ class Tracer {
     PhongInputs phong_inputs(const SurfacePoint* sps, const vec3* dirs, int n) const;
     void phong_lanes(const SurfacePoint* sps, const vec3* dirs, int n, RayCounts& counts,
                      vec3* local) const;
+    static Ray reflected_ray(const Ray& r, const SurfacePoint& sp);
+    enum class Bounce { kReflection, kInternal, kRefraction };
+    static Path next_path(const Path& path, const Material& m, Bounce bounce, std::uint32_t object);
     vec3 reflected(const Ray& r, const SurfacePoint& sp, const Path& path, RayCounts& counts) const;
+    void shade_lanes(const Ray* rays, const Hit* hits, const std::uint32_t* which,
+                     const Path* paths, int n, RayCounts& counts, vec3* colours) const;
+    void bounce_lanes(const Ray* rays, const Hit* hits, const std::uint32_t* which,
+                      const Path* paths, const SurfacePoint* sps, int n, RayCounts& counts,
+                      vec3* reflection, vec3* refraction) const;
     vec3 refracted(const Ray& r, const Hit& hit, const SurfacePoint& sp, const Path& path,
                    RayCounts& counts) const;
     enum class FeelerCase { kTrace, kSeen, kHidden };

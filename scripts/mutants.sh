@@ -583,6 +583,25 @@ mutant surface-leaves-meeting-again-as-it-was core/scene.cpp \
     'sp.cannot_meet_again = leaves ? hit.object : kNoObject;' \
     'if (leaves) sp.cannot_meet_again = hit.object;' \
     rt_tests $(unit 'Scene.*')
+mutant bounce-lanes-internal-reflection-in-the-reflections-place core/tracer_lanes.cpp \
+    'if (next[j].bounce == Bounce::kReflection)' 'if (next[j].bounce != Bounce::kRefraction)' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant bounce-lanes-misses-black core/tracer_lanes.cpp \
+    '!= 0 ? colours[c++] : scene_.background);' '!= 0 ? colours[c++] : vec3(0.0f));' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant bounce-lanes-hits-take-the-lanes-colour core/tracer_lanes.cpp \
+    '!= 0 ? colours[c++] : scene_.background);' '!= 0 ? colours[j] : scene_.background);' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant bounce-lanes-refraction-keeps-the-media core/tracer_lanes.cpp \
+    'path.media.cross(object, m.ior).after,' 'path.media,' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant bounce-lanes-reflection-no-deeper core/tracer_lanes.cpp \
+    'return Path{path.depth + 1, path.weight * m.reflectivity, path.media,' \
+    'return Path{path.depth, path.weight * m.reflectivity, path.media,' \
+    rt_tests $(unit 'ShadeFound.*')
+mutant bounce-lanes-found-paths-of-the-first core/tracer_lanes.cpp \
+    'found_paths[j] = path_at(first + j);' 'found_paths[j] = path_at(first);' \
+    rt_tests $(unit 'ShadeFound.*')
 mutant top-tree-lanes-take-no-bound core/scene.cpp \
     'hit |= intersect_primitive_packet(object, nullptr, *as_lanes, hits, lanes);' \
     'hit |= intersect_primitive_packet(object, nullptr, *as_lanes, hits, lanes, true);' \

@@ -109,8 +109,9 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitWhereLightsMisbehave) {
 }
 
 // Bounces many deep: two mirrors facing each other, a glass ball inside another (media
-// nested), glass seen from inside past the critical angle (total internal reflection in
-// the refracted ray's place), a weight limit that stops some paths early and none at all.
+// nested), a glass block whose sides a ray inside meets past the critical angle (total
+// internal reflection in the refracted ray's place: checked to happen), a weight limit
+// that stops some paths early and none at all.
 TEST(ShadeFound, EachLaneIsShadeHitBitForBitDepthAfterDepth) {
     SceneDescription desc;
     desc.camera = Camera::look_at({0.3f, 2.5f, 7}, {0, 1, 0}, {0, 1, 0}, 55.0f, 48, 36);
@@ -133,10 +134,27 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitDepthAfterDepth) {
     desc.objects.push_back(Object{"outer", Sphere{{0, 1.2f, 0}, 1.1f}, 2, {}});
     desc.objects.push_back(Object{"inner", Sphere{{0.1f, 1.2f, 0.1f}, 0.5f}, 3, {}});
     desc.objects.push_back(Object{"ball", Sphere{{-1.8f, 0.5f, -1}, 0.5f}, 1, {}});
+    // A glass block: a ray that enters its top leaves through no side (a ball's symmetry
+    // lets every ray out again; a cube's sides meet it past the critical angle).
+    desc.meshes.push_back(
+        test::box_mesh(vec3(1.2f, 0.0f, -0.5f), vec3(2.4f, 1.0f, 0.7f), test::Winding::kOutward));
+    desc.objects.push_back(Object{"block", MeshRef{0, false}, 2, {}});
     desc.lights.push_back(Light{Light::Type::kPoint, {2, 6, 4}, {}, vec3(0.8f)});
     desc.lights.push_back(
         Light{Light::Type::kDirectional, {}, glm::normalize(vec3(-1, -2, -1)), vec3(0.3f)});
     const Scene scene(std::move(desc));
+    // Some pixel's ray tree takes a total internal reflection, as the test means to.
+    const auto internal = [](const RayNode& node, const auto& self) -> bool {
+        if (node.total_internal_reflection) return true;
+        for (const RayNode& child : node.children)
+            if (self(child, self)) return true;
+        return false;
+    };
+    int reflected_inside = 0;
+    for (int y = 0; y < scene.camera.rows; y += 2)
+        for (int x = 0; x < scene.camera.cols; x += 2)
+            reflected_inside += internal(trace_ray_tree(scene, scene.camera, {}, x, y), internal);
+    EXPECT_GT(reflected_inside, 10);
     for (const float min_weight : {0.0f, 0.05f}) {
         TraceOptions options;
         options.max_depth = 7;
