@@ -7,7 +7,6 @@
 #include <glm/geometric.hpp>
 
 namespace rt {
-vec3 reflect_dir(const vec3& d, const vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
 
 Refraction refract_dir(const vec3& d, const vec3& n, float eta_from, float eta_to) {
     const float eta = eta_from / eta_to;
@@ -186,11 +185,6 @@ void Tracer::record_feeler(const Ray& feeler, float t_max, const Light& light, b
 
 // `path` is the new ray's: one deeper, its weight, and (a reflection stays on its side
 // of the surface) the media of the ray that arrived.
-Ray Tracer::reflected_ray(const Ray& r, const SurfacePoint& sp) {
-    return Ray{offset_ray_origin(sp.p, sp.geometric_normal),
-               reflect_dir(glm::normalize(r.dir), sp.normal)};
-}
-
 vec3 Tracer::reflected(const Ray& r, const SurfacePoint& sp, const Path& path,
                        RayCounts& counts) const {
     ++counts.reflected;

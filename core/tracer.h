@@ -4,6 +4,8 @@
 
 #include <cstdint>
 
+#include <glm/geometric.hpp>
+
 #include "core/medium.h"
 #include "core/ray_tree.h"
 #include "core/scene.h"
@@ -41,7 +43,7 @@ struct RayCounts {
 };
 
 // Mirror direction d' = d - 2 (d . n) n, for unit n.
-vec3 reflect_dir(const vec3& d, const vec3& n);
+inline vec3 reflect_dir(const vec3& d, const vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
 
 // Snell's law for a unit direction d meeting a surface whose unit normal n faces it,
 // going from index eta_from into eta_to. Nothing on total internal reflection.
@@ -116,7 +118,11 @@ class Tracer {
     PhongInputs phong_inputs(const SurfacePoint* sps, const vec3* dirs, int n) const;
     void phong_lanes(const SurfacePoint* sps, const vec3* dirs, int n, RayCounts& counts,
                      vec3* local) const;
-    static Ray reflected_ray(const Ray& r, const SurfacePoint& sp);
+    // The mirrored ray at sp of r, from sp.p moved off the surface.
+    static Ray reflected_ray(const Ray& r, const SurfacePoint& sp) {
+        return Ray{offset_ray_origin(sp.p, sp.geometric_normal),
+                   reflect_dir(glm::normalize(r.dir), sp.normal)};
+    }
     enum class Bounce { kReflection, kInternal, kRefraction };
     static Path next_path(const Path& path, const Material& m, Bounce bounce, std::uint32_t object);
     vec3 reflected(const Ray& r, const SurfacePoint& sp, const Path& path, RayCounts& counts) const;

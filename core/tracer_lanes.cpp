@@ -100,36 +100,42 @@ void Tracer::bounce_lanes(const Ray* rays, const Hit* hits, const std::uint32_t*
     struct Next {
         int k;  // the hit's
         Bounce bounce;
+        vec3 refracted;  // kRefraction: the ray's direction
     };
-    std::array<Ray, 2 * kPacketWidth> next_rays;
-    std::array<Next, 2 * kPacketWidth> next;
+    std::array<Next, 2 * kPacketWidth> next;  // not initialised: most runs have no bounces
     int m = 0;
     for (int k = 0; k < n; ++k) {
-        const Ray& r = rays[which[k]];
         const Path& path = path_of(k);
         const SurfacePoint& sp = sps[k];
         if (path.depth >= options_.max_depth) continue;
         const Material& mat = scene_.materials[sp.material];
         if (options_.reflections && mat.reflectivity * path.weight >= options_.min_weight) {
             ++counts.reflected;
-            next_rays[m] = reflected_ray(r, sp);
-            next[m++] = {k, Bounce::kReflection};
+            next[m].k = k;
+            next[m++].bounce = Bounce::kReflection;
         }
         if (options_.refractions && mat.transparency * path.weight >= options_.min_weight) {
             const MediumStack::Crossing crossing = path.media.cross(hits[which[k]].object, mat.ior);
-            const Refraction t =
-                refract_dir(glm::normalize(r.dir), sp.normal, crossing.eta_from, crossing.eta_to);
+            const Refraction t = refract_dir(glm::normalize(rays[which[k]].dir), sp.normal,
+                                             crossing.eta_from, crossing.eta_to);
+            next[m].k = k;
             if (t.total_internal_reflection) {
                 ++counts.reflected;
-                next_rays[m] = reflected_ray(r, sp);
-                next[m++] = {k, Bounce::kInternal};
+                next[m++].bounce = Bounce::kInternal;
             } else {
                 ++counts.refracted;
-                next_rays[m] = Ray{offset_ray_origin(sp.p, -sp.geometric_normal), t.dir};
-                next[m++] = {k, Bounce::kRefraction};
+                next[m].refracted = t.dir;
+                next[m++].bounce = Bounce::kRefraction;
             }
         }
     }
+    if (m == 0) return;
+    const auto ray_at = [&](int j) {
+        const SurfacePoint& sp = sps[next[j].k];
+        return next[j].bounce == Bounce::kRefraction
+                   ? Ray{offset_ray_origin(sp.p, -sp.geometric_normal), next[j].refracted}
+                   : reflected_ray(rays[which[next[j].k]], sp);
+    };
     const auto taken = [&](int j, const vec3& colour) {
         const int k = next[j].k;
         const Material& mat = scene_.materials[sps[k].material];
@@ -147,12 +153,14 @@ void Tracer::bounce_lanes(const Ray* rays, const Hit* hits, const std::uint32_t*
         const int count = std::min(kPacketWidth, m - first);
         if (count < kBouncesTogether) {
             for (int j = first; j < first + count; ++j)
-                taken(j, trace(next_rays[j], path_at(j), counts));
+                taken(j, trace(ray_at(j), path_at(j), counts));
             continue;
         }
+        std::array<Ray, kPacketWidth> next_rays;
+        for (int j = 0; j < count; ++j) next_rays[j] = ray_at(first + j);
         std::array<Hit, kPacketWidth> found_hits{};
-        const unsigned found = scene_.intersect_packet(next_rays.data() + first, found_hits.data(),
-                                                       (1u << count) - 1u);
+        const unsigned found =
+            scene_.intersect_packet(next_rays.data(), found_hits.data(), (1u << count) - 1u);
         std::array<Path, kPacketWidth> found_paths;
         std::array<std::uint32_t, kPacketWidth> hit_lanes;
         int h = 0;
@@ -163,8 +171,8 @@ void Tracer::bounce_lanes(const Ray* rays, const Hit* hits, const std::uint32_t*
         }
         std::array<vec3, kPacketWidth> colours;
         if (h > 0)
-            shade_lanes(next_rays.data() + first, found_hits.data(), hit_lanes.data(),
-                        found_paths.data(), h, counts, colours.data());
+            shade_lanes(next_rays.data(), found_hits.data(), hit_lanes.data(), found_paths.data(),
+                        h, counts, colours.data());
         for (int j = 0, c = 0; j < count; ++j)
             taken(first + j, ((found >> j) & 1u) != 0 ? colours[c++] : scene_.background);
     }
