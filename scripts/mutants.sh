@@ -602,6 +602,10 @@ mutant bounce-lanes-reflection-no-deeper core/tracer_lanes.cpp \
 mutant bounce-lanes-found-paths-of-the-first core/tracer_lanes.cpp \
     'found_paths[j] = path_at(first + j);' 'found_paths[j] = path_at(first);' \
     rt_tests $(unit 'ShadeFound.*')
+mutant few-objects-but-the-last core/scene.cpp \
+    'return found | intersect_among(bounded_.data(), static_cast<int>(bounded_.size()),' \
+    'return found | intersect_among(bounded_.data(), static_cast<int>(bounded_.size()) - 1,' \
+    rt_tests $(unit 'ScenePackets.*')
 mutant top-tree-lanes-take-no-bound core/scene.cpp \
     'hit |= intersect_primitive_packet(object, nullptr, *as_lanes, hits, lanes);' \
     'hit |= intersect_primitive_packet(object, nullptr, *as_lanes, hits, lanes, true);' \
