@@ -1,5 +1,6 @@
 #include "core/scene.h"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstddef>
@@ -14,7 +15,14 @@
 #include "core/vec3_lanes.h"
 
 namespace rt {
+
 namespace {
+// Up to this many bounded objects, none of them a mesh (tutorial's 2 spheres), a packet
+// tests each of them on the lanes (intersect_among), not the objects' tree: frames 0.91x
+// tutorial (probe, 20 frames a side). With a mesh among them it cost more than the tree
+// saved (whitted 1.10x, textured 1.07x: the mesh's own tree walked for every packet).
+// Not tuned: scenes of 3 to 100 spheres were not measured.
+constexpr std::size_t kFewObjects = 6;
 
 std::vector<TriangleMesh> built(std::vector<TriangleMesh> meshes, AccelKind kind) {
     for (auto& mesh : meshes) mesh.build(kind);
@@ -61,6 +69,10 @@ Scene::Scene(SceneDescription d, AccelKind kind, bool light_buffers)
     for (std::size_t slot = 0; slot < by_slot.size(); ++slot)
         by_slot[slot] = bounded_[top_.order()[slot]];
     bounded_ = std::move(by_slot);
+    few_shapes_ = bounded_.size() <= kFewObjects &&
+                  std::none_of(bounded_.begin(), bounded_.end(), [&](std::uint32_t object) {
+                      return std::holds_alternative<MeshRef>(objects[object].shape);
+                  });
     std::vector<Aabb> slot_boxes;
     for (const std::uint32_t object : bounded_)
         slot_boxes.push_back(object_bounds(objects[object]));
@@ -300,18 +312,10 @@ unsigned Scene::intersect_among(const std::uint32_t* among, int count,
     return found;
 }
 
-namespace {
-// Up to this many bounded objects (whitted has 4, tutorial and textured 2, cornell 1), a
-// packet tests each of them on the lanes (intersect_among), not the objects' tree: frames
-// 0.97-0.98x whitted, 0.92x textured, 0.85x tutorial (probe, 20 frames a side). Not
-// tuned: scenes of 7 to 100 objects were not measured.
-constexpr std::size_t kFewObjects = 6;
-}  // namespace
-
 unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) const {
     active &= (1u << kPacketWidth) - 1u;
     unsigned found = intersect_unbounded_packet(rays, hits, active);
-    if (bounded_.size() <= kFewObjects) {
+    if (few_shapes_) {
         unsigned finite = 0;  // as the tree: a ray that is not finite meets no bounded object
         for (unsigned rest = active; rest != 0; rest &= rest - 1)
             if (finite_ray(rays[__builtin_ctz(rest)])) finite |= rest & -rest;

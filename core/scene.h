@@ -182,9 +182,10 @@ class Scene {
                                 const float* t_max, unsigned lanes) const;
     bool occluded_in_tree(const Ray& feeler, float t_max, std::uint32_t leaving) const;
 
-    Accel top_;                                              // over the bounded objects
-    std::vector<std::uint32_t> bounded_;                     // traversal slot -> object
-    std::vector<std::uint32_t> unbounded_;                   // planes: tested for every ray
+    Accel top_;                             // over the bounded objects
+    std::vector<std::uint32_t> bounded_;    // traversal slot -> object
+    std::vector<std::uint32_t> unbounded_;  // planes: tested for every ray
+    bool few_shapes_ = false;  // few bounded objects, no mesh: packets test each (intersect_packet)
     std::vector<std::optional<LightBuffer>> light_buffers_;  // per light, where it has one
     struct PlaneFrame {
         vec3 t1{0.0f}, t2{0.0f};  // tangent_frame of a plane's normal: its checker's axes

@@ -326,7 +326,7 @@ TEST(ScenePackets, PlanesGiveEachRayItsOwnHit) {
 
 TEST(ScenePackets, EveryPixelGetsTheHitItGetsAlone) {
     for (const char* name :
-         {"whitted.json", "cornell.json", "textured.json", "many_spheres.json"}) {
+         {"whitted.json", "cornell.json", "textured.json", "many_spheres.json", "tutorial.json"}) {
         const Scene scene(test::shipped_scene(name, 160, 90));
         const Camera& camera = scene.camera;
         int hits = 0;
