@@ -128,6 +128,14 @@ class Tracer {
     vec3 reflected(const Ray& r, const SurfacePoint& sp, const Path& path, RayCounts& counts) const;
     void shade_lanes(const Ray* rays, const Hit* hits, const std::uint32_t* which,
                      const Path* paths, int n, RayCounts& counts, vec3* colours) const;
+    struct NextRay {
+        int k;  // the hit's
+        Bounce bounce;
+        vec3 refracted;  // kRefraction: the ray's direction
+    };
+    static const Path& path_of(const Path* paths, const std::uint32_t* which, int k);
+    int bounces_of(const Ray* rays, const Hit* hits, const std::uint32_t* which, const Path* paths,
+                   const SurfacePoint* sps, int n, RayCounts& counts, NextRay* next) const;
     void bounce_lanes(const Ray* rays, const Hit* hits, const std::uint32_t* which,
                       const Path* paths, const SurfacePoint* sps, int n, RayCounts& counts,
                       vec3* reflection, vec3* refraction) const;

@@ -92,20 +92,20 @@ constexpr int kBouncesTogether = 3;
 // packets, and those that hit shaded together again (shade_lanes), one depth deeper.
 // Their colours, times the reflectivity or transparency, go to `reflection` and
 // `refraction` (a total internal reflection's to `refraction`, as in bounces).
-void Tracer::bounce_lanes(const Ray* rays, const Hit* hits, const std::uint32_t* which,
-                          const Path* paths, const SurfacePoint* sps, int n, RayCounts& counts,
-                          vec3* reflection, vec3* refraction) const {
+// The camera's path where `paths` is null.
+const Tracer::Path& Tracer::path_of(const Path* paths, const std::uint32_t* which, int k) {
     static const Path kCamera{};
-    const auto path_of = [&](int k) -> const Path& { return paths ? paths[which[k]] : kCamera; };
-    struct Next {
-        int k;  // the hit's
-        Bounce bounce;
-        vec3 refracted;  // kRefraction: the ray's direction
-    };
-    std::array<Next, 2 * kPacketWidth> next;  // not initialised: most runs have no bounces
+    return paths ? paths[which[k]] : kCamera;
+}
+
+// The reflected and refracted rays of a run's hits, as bounces and refracted cast them
+// (and count them), written to `next`, up to two a hit; returns how many.
+int Tracer::bounces_of(const Ray* rays, const Hit* hits, const std::uint32_t* which,
+                       const Path* paths, const SurfacePoint* sps, int n, RayCounts& counts,
+                       NextRay* next) const {
     int m = 0;
     for (int k = 0; k < n; ++k) {
-        const Path& path = path_of(k);
+        const Path& path = path_of(paths, which, k);
         const SurfacePoint& sp = sps[k];
         if (path.depth >= options_.max_depth) continue;
         const Material& mat = scene_.materials[sp.material];
@@ -129,6 +129,14 @@ void Tracer::bounce_lanes(const Ray* rays, const Hit* hits, const std::uint32_t*
             }
         }
     }
+    return m;
+}
+
+void Tracer::bounce_lanes(const Ray* rays, const Hit* hits, const std::uint32_t* which,
+                          const Path* paths, const SurfacePoint* sps, int n, RayCounts& counts,
+                          vec3* reflection, vec3* refraction) const {
+    std::array<NextRay, 2 * kPacketWidth> next;  // not initialised: most runs have no bounces
+    const int m = bounces_of(rays, hits, which, paths, sps, n, counts, next.data());
     if (m == 0) return;
     const auto ray_at = [&](int j) {
         const SurfacePoint& sp = sps[next[j].k];
@@ -146,8 +154,8 @@ void Tracer::bounce_lanes(const Ray* rays, const Hit* hits, const std::uint32_t*
     };
     const auto path_at = [&](int j) {
         const int k = next[j].k;
-        return next_path(path_of(k), scene_.materials[sps[k].material], next[j].bounce,
-                         hits[which[k]].object);
+        return next_path(path_of(paths, which, k), scene_.materials[sps[k].material],
+                         next[j].bounce, hits[which[k]].object);
     };
     for (int first = 0; first < m; first += kPacketWidth) {
         const int count = std::min(kPacketWidth, m - first);
