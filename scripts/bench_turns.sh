@@ -35,7 +35,7 @@ for line in open(sys.argv[1]):
     which, structure = line.split()[:2]
     ratios = [float(x) for x in re.findall(r"\(([0-9.]+)x\)", line)]
     rows.setdefault((which, structure), []).append(ratios)
-print(f"medians of {sys.argv[2]} rounds, time per ray over Embree's: primary / shadow / secondary")
+print(f"medians of {sys.argv[2]} rounds, time per ray over Embree's: primary / shadow / secondary / mirror")
 for (which, structure), runs in sorted(rows.items(), key=lambda kv: (kv[0][1], kv[0][0])):
     cols = [statistics.median(r[i] for r in runs) for i in range(len(runs[0]))]
     print(f"{which} {structure:12s}", " / ".join(f"{c:.3f}x" for c in cols))

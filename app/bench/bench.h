@@ -27,7 +27,7 @@ using rt::vec3;
 rt::TriangleMesh flatten(const rt::SceneDescription& scene);
 
 struct RaySet {
-    std::string name;  // primary, shadow, secondary
+    std::string name;  // primary, shadow, secondary, mirror
     std::vector<rt::Ray> rays;
     std::vector<float> t_max;
     bool occlusion = false;  // any-hit queries (shadow feelers)
@@ -44,7 +44,10 @@ RaySet primary_rays(const rt::Camera& camera);
 
 // Coherent primary rays from `camera`; shadow feelers from their hits to every light;
 // incoherent secondary rays, cosine-distributed about the hit normals (seeded, so every
-// run and every structure gets the same rays).
+// run and every structure gets the same rays), as a path tracer's diffuse bounces; and
+// the primary rays mirrored at their hits, the secondary rays a Whitted tracer makes
+// (reflections: neighbours' rays leave nearby points in nearby directions, as the
+// renderer's bounces do, which it traces in packets).
 std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMesh& mesh,
                                   const std::vector<rt::Light>& lights,
                                   const std::vector<Result>& primary_hits);

@@ -61,11 +61,12 @@ RaySet primary_rays(const rt::Camera& camera) {
 std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMesh& mesh,
                                   const std::vector<rt::Light>& lights,
                                   const std::vector<Result>& primary_hits) {
-    std::vector<RaySet> sets(3);
+    std::vector<RaySet> sets(4);
     sets[0] = primary_rays(camera);
     sets[1].name = "shadow";
     sets[1].occlusion = true;
     sets[2].name = "secondary";
+    sets[3].name = "mirror";
     std::vector<vec3> points;  // the hits, offset off their surfaces
     for (std::size_t i = 0; i < primary_hits.size(); ++i) {
         const Result& h = primary_hits[i];
@@ -76,6 +77,8 @@ std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMe
         points.push_back(rt::offset_ray_origin(r.at(h.t), n));
         sets[2].rays.push_back({points.back(), cosine_direction(n, static_cast<std::uint32_t>(i))});
         sets[2].t_max.push_back(rt::kInfinity);
+        sets[3].rays.push_back({points.back(), glm::reflect(r.dir, n)});
+        sets[3].t_max.push_back(rt::kInfinity);
     }
     // Light by light, in the pixels' order: neighbouring feelers go to one light, as a
     // renderer's packets of them would.

@@ -11,7 +11,7 @@ check() { cases=$((cases + 1)); local what=$1; shift; if "$@"; then echo "ok   $
 "$rtbench" "$assets/models/teapot.obj" --size 160x90 --repeats 1 --json "$out/teapot.json" >"$out/teapot.log" 2>&1
 check "structures agree on the teapot (exit 0)" test $? -eq 0
 check "  ... and say so" grep -q "every structure agrees" "$out/teapot.log"
-for key in brute grid bvh2 bvh bvh-packets build_seconds memory_bytes primary shadow secondary mrays_per_s checks; do
+for key in brute grid bvh2 bvh bvh-packets build_seconds memory_bytes primary shadow secondary mirror mrays_per_s checks; do
     check "  ... JSON has \"$key\"" grep -q "\"$key\"" "$out/teapot.json"
 done
 if grep -q '"embree"' "$out/teapot.json"; then
