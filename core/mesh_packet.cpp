@@ -61,7 +61,7 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
     for (unsigned m = active; m != 0; m &= m - 1)
         t_max[__builtin_ctz(m)] = hits[__builtin_ctz(m)].t;
     PacketShear lazy_shear(rays, active);
-    unsigned found = 0;
+    unsigned found = 0, alone = 0;  // hits in the packet's leaves, and of rays traced alone
     accel_.traverse_packet<false>(
         rays, t_max.data(), active,
         [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
@@ -99,12 +99,18 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
             }
             found |= hit;
             return hit;
+        },
+        [&](unsigned lanes) {
+            for (; lanes != 0; lanes &= lanes - 1) {
+                const unsigned lane = __builtin_ctz(lanes);
+                if (intersect(rays[lane], hits[lane])) alone |= 1u << lane;
+            }
         });
     for (unsigned m = found; m != 0; m &= m - 1) {
         const unsigned lane = __builtin_ctz(m);
         hits[lane].t = t_max[lane];
     }
-    return found;
+    return found | alone;
 }
 
 unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsigned active) const {
@@ -136,6 +142,12 @@ unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsi
             }
             blocked |= hit;
             return hit;
+        },
+        [&](unsigned lanes) {
+            for (; lanes != 0; lanes &= lanes - 1) {
+                const unsigned lane = __builtin_ctz(lanes);
+                if (occluded(rays[lane], t_max[lane])) blocked |= 1u << lane;
+            }
         });
     return blocked;
 }

@@ -68,7 +68,12 @@ class WideBvh {
     // tests the leaf for the rays in `lanes` (a bit each) and returns the bits of those
     // that hit it, having shortened their t_max; a ray that hits is done if kAnyHit. Every
     // ray gets the answer traverse_leaves gives it alone (of two hits at the very same t,
-    // either).
+    // either). Rays whose directions differ in sign on some axis share no useful bounds:
+    // they go to `alone(lanes)`, the caller's own single-ray code, one at a time (without
+    // it, through traverse_leaves with hit_leaf).
+    template <bool kAnyHit, class HitLeaf, class Alone>
+    void traverse_packet(const Ray* rays, float* t_max, unsigned active, HitLeaf&& hit_leaf,
+                         Alone&& alone) const;
     template <bool kAnyHit, class HitLeaf>
     void traverse_packet(const Ray* rays, float* t_max, unsigned active, HitLeaf&& hit_leaf) const;
     template <class F>

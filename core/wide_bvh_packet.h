@@ -13,7 +13,9 @@
 // box test, and the triangle tests decide.)
 //
 // Rays whose direction signs differ on some axis, or with a zero component, make no
-// useful interval: such a packet is traced a ray at a time (WideBvh::traverse_leaves).
+// useful interval: such a packet is traced a ray at a time, by the caller's own
+// single-ray code where it gives one (a mesh: its intersect and occluded, whose leaf
+// tests need none of the packet's set-up), else WideBvh::traverse_leaves.
 
 #include <algorithm>
 #include <array>
@@ -169,6 +171,15 @@ template <int N>
 template <bool kAnyHit, class HitLeaf>
 void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
                                  HitLeaf&& hit_leaf) const {
+    traverse_packet<kAnyHit>(rays, t_max, active, hit_leaf, [&](unsigned lanes) {
+        detail::one_by_one<kAnyHit>(*this, rays, t_max, lanes, hit_leaf);
+    });
+}
+
+template <int N>
+template <bool kAnyHit, class HitLeaf, class Alone>
+void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
+                                 HitLeaf&& hit_leaf, Alone&& alone) const {
     active &= (1u << detail::kRayLanes<N>)-1u;
     for (unsigned m = active; m != 0; m &= m - 1) {
         const int lane = __builtin_ctz(m);
@@ -176,8 +187,7 @@ void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
     }
     if (nodes_.empty() || active == 0) return;
     detail::PacketBoxes<N> boxes;
-    if (!boxes.set(rays, active))
-        return detail::one_by_one<kAnyHit>(*this, rays, t_max, active, hit_leaf);
+    if (!boxes.set(rays, active)) return alone(active);
     detail::PacketLimits<N> limits;
     limits.update(t_max, active);
     struct Pending {

@@ -518,6 +518,18 @@ mutant packet-leaf-across-swaps-barycentrics core/mesh_packet.cpp \
     'record(ray, start + k, lane[ray], b1[ray], b2[ray]);' \
     'record(ray, start + k, lane[ray], b2[ray], b1[ray]);' \
     rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant packet-alone-drops-a-ray core/mesh_packet.cpp \
+    'if (intersect(rays[lane], hits[lane])) alone |= 1u << lane;' \
+    'if (intersect(rays[lane], hits[lane])) alone |= 0u;' \
+    rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant packet-alone-feeler-unbounded core/mesh_packet.cpp \
+    'if (occluded(rays[lane], t_max[lane])) blocked |= 1u << lane;' \
+    'if (occluded(rays[lane], kInfinity)) blocked |= 1u << lane;' \
+    rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant packet-alone-none-traced core/wide_bvh_packet.h \
+    'if (!boxes.set(rays, active)) return alone(active);' \
+    'if (!boxes.set(rays, active)) return alone(active & (active - 1));' \
+    rt_tests $(unit 'EveryKind/PacketTest.*')
 mutant watertight-back-faces-missed core/triangle4.h \
     '(lanes<kLe>(o.u, zero) & lanes<kLe>(o.v, zero) & lanes<kLe>(o.w, zero));' \
     '0u;' rt_tests $(unit 'Triangle4.*:TrianglePacket.*:EveryKind/PacketTest.*')
