@@ -26,6 +26,23 @@ constexpr std::uint32_t kWideLeaf = 2 * kTriangle4Lanes;
 #else
 constexpr std::uint32_t kWideLeaf = kTriangle4Lanes;
 #endif
+
+// A ray set up for the watertight test at the first leaf it reaches: its three divisions
+// are not paid by the rays that miss every leaf (a scene's feelers and bounces that pass
+// a mesh's box by).
+class LazySheared {
+  public:
+    explicit LazySheared(const Ray& r) : ray_(r) {}
+    [[gnu::always_inline]] const ShearedRay& get() {
+        if (!ready_) sheared_ = ShearedRay(ray_), ready_ = true;
+        return sheared_;
+    }
+
+  private:
+    const Ray& ray_;
+    ShearedRay sheared_;
+    bool ready_ = false;
+};
 }  // namespace
 
 void TriangleMesh::build(AccelKind kind, int threads) {
@@ -111,11 +128,11 @@ std::size_t TriangleMesh::memory_bytes() const {
 }
 
 bool TriangleMesh::intersect(const Ray& r, Hit& hit) const {
-    const ShearedRay sheared(r);
+    LazySheared sheared(r);
     return accel_.traverse_leaves<false>(
         r, hit.t, [&](std::uint32_t leaf, std::uint32_t count, float& t_max) RT_FORCE_INLINE {
             const std::uint32_t start = first_pack(leaf);
-            const Triangle4Hit h = leaf_hit(start, count, sheared, t_max);
+            const Triangle4Hit h = leaf_hit(start, count, sheared.get(), t_max);
             if (h.lane < 0) return false;
             t_max = h.t;
             hit.prim = pack_prims_[kTriangle4Lanes * start + static_cast<std::uint32_t>(h.lane)];
@@ -139,10 +156,10 @@ bool TriangleMesh::intersect_triangle(std::uint32_t prim, const Ray& r, Hit& hit
 }
 
 bool TriangleMesh::occluded(const Ray& r, float t_max) const {
-    const ShearedRay sheared(r);
+    LazySheared sheared(r);
     return accel_.traverse_leaves<true>(
         r, t_max, [&](std::uint32_t leaf, std::uint32_t count, float& t_limit) RT_FORCE_INLINE {
-            return leaf_hit(first_pack(leaf), count, sheared, t_limit).lane >= 0;
+            return leaf_hit(first_pack(leaf), count, sheared.get(), t_limit).lane >= 0;
         });
 }
 

@@ -530,6 +530,9 @@ mutant packet-alone-none-traced core/wide_bvh_packet.h \
     'if (!boxes.set(rays, active)) return alone(active);' \
     'if (!boxes.set(rays, active)) return alone(active & (active - 1));' \
     rt_tests $(unit 'EveryKind/PacketTest.*')
+mutant lazy-shear-never-set-up core/mesh.cpp \
+    'bool ready_ = false;' 'bool ready_ = true;' \
+    rt_tests $(unit 'EveryKind/PacketTest.*:Mesh*.*')
 mutant watertight-back-faces-missed core/triangle4.h \
     '(lanes<kLe>(o.u, zero) & lanes<kLe>(o.v, zero) & lanes<kLe>(o.w, zero));' \
     '0u;' rt_tests $(unit 'Triangle4.*:TrianglePacket.*:EveryKind/PacketTest.*')
