@@ -20,8 +20,12 @@ cd "$(dirname "$0")/.."
 export RTVIEW_SHADER_DIR=${RTVIEW_SHADER_DIR:-shaders}
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
+# The order alternates (A B, B A, ...): two runs always in the same order put the first
+# 10-15 % behind in some spells and ahead in others (docs/BENCHMARKS.md, thirtieth session).
 for ((i = 0; i < rounds; ++i)); do
-    for which in A B; do
+    order="A B"
+    ((i % 2)) && order="B A"
+    for which in $order; do
         bin=$a
         [ $which = B ] && bin=$b
         "$bin" "$mesh" --only bvh,embree,bvh-packets,embree-packets "${options[@]}" |
