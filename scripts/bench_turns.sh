@@ -7,9 +7,11 @@
 # e.g. scripts/bench_turns.sh 10 assets/models/stanford-bunny.obj /tmp/old/rtbench \
 #          build/app/bench/rtbench
 # Options after the four replace the default `--repeats 7`.
+# LD_LIBRARY_PATH_A, LD_LIBRARY_PATH_B: where set, the library path of A's or B's runs:
+# one rtbench against two builds of Embree (docs/BENCHMARKS.md, thirty-first session).
 set -euo pipefail
 if [ $# -lt 4 ]; then
-    sed -n '2,9p' "$0" >&2
+    sed -n '2,11p' "$0" >&2
     exit 1
 fi
 rounds=$1 mesh=$2 a=$3 b=$4
@@ -26,9 +28,9 @@ for ((i = 0; i < rounds; ++i)); do
     order="A B"
     ((i % 2)) && order="B A"
     for which in $order; do
-        bin=$a
-        [ $which = B ] && bin=$b
-        "$bin" "$mesh" --only bvh,embree,bvh-packets,embree-packets "${options[@]}" |
+        bin=$a lib=${LD_LIBRARY_PATH_A:-}
+        [ $which = B ] && bin=$b lib=${LD_LIBRARY_PATH_B:-}
+        env ${lib:+LD_LIBRARY_PATH="$lib"} "$bin" "$mesh" --only bvh,embree,bvh-packets,embree-packets "${options[@]}" |
             sed -n "s/^\(bvh\|bvh-packets\) .*/$which &/p" >>"$out"
     done
 done
