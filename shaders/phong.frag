@@ -4,7 +4,8 @@
 // Same materials, lights, checker and normal rules as core/tracer.cpp and core/scene.cpp.
 
 // Compiled with SHADOW_MAPS, ENV_MAPS and TEXTURES 0 or 1 (app/gl/program.h says why not
-// uniforms).
+// uniforms), and IDS: 0 where the target holds no item buffer, 1 for object ids alone,
+// 2 for objects and triangles (RasterRenderer::id_define says why three).
 
 const int kMaxLights = 16;  // RasterRenderer::kMaxLights
 #ifndef SHADOW_MAPS
@@ -15,6 +16,9 @@ const int kMaxLights = 16;  // RasterRenderer::kMaxLights
 #endif
 #ifndef TEXTURES
 #define TEXTURES 0
+#endif
+#ifndef IDS
+#define IDS 0
 #endif
 
 in vec3 v_local;
@@ -76,15 +80,19 @@ uniform vec3 u_pattern_shift;  // Scene::pattern_shift: the scene's origin, fold
 
 layout(location = 0) out vec4 o_colour;  // linear; encoded to sRGB where it is written out
 // The item buffer from the same draw (as itembuffer.frag), where the target has room for
-// it (Framebuffer::Kind::kColourAndIds); elsewhere these two go nowhere.
+// it (Framebuffer::Kind::kColourAndIds, IDS > 0).
+#if IDS > 0
 uniform uint u_object_id;  // object index + 1
-uniform uint u_prim_base;  // the draw's first triangle within the object's mesh
+layout(location = 1) out uint o_object;
+#endif
+#if IDS > 1
+flat in uint v_prim;  // the triangle within the object's mesh (raster.vert)
 // > 0: the ids packed into o_object, the object id above this many bits of the triangle
 // (app/gl/framebuffer.h, IdLayout; the layout keeps every mesh's triangles below them,
 // and a tessellated sphere's or plane's, which nothing reads, are cut to fit)
 uniform uint u_prim_bits;
-layout(location = 1) out uint o_object;
 layout(location = 2) out uint o_prim;
+#endif
 
 struct Surface {
     vec3 world;
@@ -174,11 +182,15 @@ float shadow_visibility(int light, vec3 world, vec3 n, vec3 to_light) {
 }
 
 void main() {
-    uint prim = u_prim_base + uint(gl_PrimitiveID);
+#if IDS == 1
+    o_object = u_object_id;
+#elif IDS > 1
+    uint prim = v_prim;
     o_object = u_prim_bits == 0u
                    ? u_object_id
                    : (u_object_id << u_prim_bits) | (prim & ((1u << u_prim_bits) - 1u));
     o_prim = prim;
+#endif
     Surface s = surface();
     vec3 to_viewer = normalize(u_eye - s.world);
     // Normals face the viewer; an interpolated normal leaning past the silhouette gives

@@ -21,6 +21,14 @@ out vec3 v_normal;
 out vec3 v_face_normal;  // the same at all three corners of a mesh triangle
 out vec2 v_uv;
 out vec3 v_colour;
+#if defined(IDS) && IDS > 1
+// The triangle's index within its mesh, for the item buffer (phong.frag, itembuffer.frag):
+// a mesh is drawn as arrays of triangles, its own from vertex 0 (GpuScene::add_mesh_draws,
+// which starts a draw of triangles from `start` at vertex 3 * start). A flat output, not
+// gl_PrimitiveID in the fragment shader, which costs llvmpipe a pass over the primitives
+// (docs/BENCHMARKS.md, "thirty-second session").
+flat out uint v_prim;
+#endif
 
 void main() {
     vec4 object = u_shape * vec4(a_position, 1.0);
@@ -32,5 +40,8 @@ void main() {
     v_face_normal = u_normal_matrix * a_face_normal;
     v_uv = a_uv;
     v_colour = a_colour;
+#if defined(IDS) && IDS > 1
+    v_prim = uint(gl_VertexID) / 3u;
+#endif
     gl_Position = u_view_projection * world;
 }

@@ -201,8 +201,9 @@ void GpuScene::add_mesh_draws(std::uint32_t object, const Object& o, const MeshR
     item.object_id = object + 1;
     const bool per_triangle = ref.own_materials && !mesh.materials.empty();
     const auto count = static_cast<std::uint32_t>(mesh.triangles.size());
-    // One draw per run of triangles that share a material, in the mesh's own order, so
-    // the triangle index is the draw's base plus gl_PrimitiveID.
+    // One draw per run of triangles that share a material, in the mesh's own order, each
+    // from its first triangle's vertices on, so that a triangle's index is its vertices'
+    // over three (raster.vert's v_prim, for the item buffer).
     for (std::uint32_t start = 0; start < count;) {
         std::uint32_t end = start + 1;
         if (per_triangle)
@@ -212,7 +213,6 @@ void GpuScene::add_mesh_draws(std::uint32_t object, const Object& o, const MeshR
         item.material = per_triangle ? mesh.materials[start] : o.material;
         item.first_vertex = static_cast<GLint>(3 * start);
         item.vertex_count = static_cast<GLsizei>(3 * (end - start));
-        item.prim_base = start;
         out.push_back(item);
         start = end;
     }

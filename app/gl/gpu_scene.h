@@ -43,7 +43,6 @@ struct DrawItem {
     glm::mat4 shape{1.0f};  // mesh vertices -> object space (sphere centre and radius, plane frame)
     std::uint32_t material = 0;
     std::uint32_t object_id = 0;    // object index + 1, as the item buffer stores it
-    std::uint32_t prim_base = 0;    // index of the draw's first triangle in its mesh
     const Plane* plane = nullptr;   // for the checker's in-plane coordinates
     bool sphere = false;            // the mesh is the unit sphere: normals are its positions
     glm::vec3 pattern_shift{0.0f};  // Scene::pattern_shift of the object and material

@@ -28,7 +28,7 @@ RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& 
     : scene_(scene),
       gpu_(scene),
       phong_variants_(shaders / "raster.vert", shaders / "phong.frag"),
-      ids_(shaders / "raster.vert", shaders / "itembuffer.frag"),
+      ids_variants_(shaders / "raster.vert", shaders / "itembuffer.frag"),
       wire_(shaders / "raster.vert", shaders / "wire.frag"),
       shadow_(shaders / "raster.vert", shaders / "shadow.frag"),
       id_layout_(IdLayout::for_scene(scene.objects.size(), most_mesh_triangles(scene))) {
@@ -36,10 +36,20 @@ RasterRenderer::RasterRenderer(const Scene& scene, const std::filesystem::path& 
     phong(false, false);  // a shader that does not compile fails here, not at the first frame
 }
 
-Program& RasterRenderer::phong(bool shadow_maps, bool environment_maps) {
+Program& RasterRenderer::phong(bool shadow_maps, bool environment_maps, bool ids) {
     return phong_variants_.get({std::string("SHADOW_MAPS ") + (shadow_maps ? "1" : "0"),
                                 std::string("ENV_MAPS ") + (environment_maps ? "1" : "0"),
-                                std::string("TEXTURES ") + (textures_.empty() ? "0" : "1")});
+                                std::string("TEXTURES ") + (textures_.empty() ? "0" : "1"),
+                                ids ? id_define() : std::string("IDS 0")});
+}
+
+// What the shaders write of the item buffer: the objects alone where no mesh needs its
+// triangles named (IdLayout::kObjectsOnly), else the triangles too (raster.vert's flat
+// v_prim). Three variants of phong.frag, not one that always writes both: the colour
+// pass alone pays nothing for the ids, nor the objects for the triangles
+// (docs/BENCHMARKS.md, "thirty-second session").
+std::string RasterRenderer::id_define() const {
+    return id_layout_.kind == IdLayout::Kind::kObjectsOnly ? "IDS 1" : "IDS 2";
 }
 
 void RasterRenderer::set_camera(Program& program, const Camera& camera) {
@@ -95,13 +105,13 @@ void RasterRenderer::set_material(const Material& m, const DrawItem& item) {
 void RasterRenderer::draw(const Camera& camera) {
     ensure_shadow_maps();
     ensure_environment_maps();
-    draw_scene(camera, -1, env_ ? &*env_ : nullptr);
+    draw_scene(camera, -1, env_ ? &*env_ : nullptr, drawing_ids_ != nullptr);
 }
 
 // Phong over every object but `skip` (an object index, or -1), mirrors and glass looking
 // up `env` when given.
-void RasterRenderer::draw_scene(const Camera& camera, int skip, const CubeAtlas* env) {
-    phong_ = &phong(shadow_maps_ && shadows_, env != nullptr);
+void RasterRenderer::draw_scene(const Camera& camera, int skip, const CubeAtlas* env, bool ids) {
+    phong_ = &phong(shadow_maps_ && shadows_, env != nullptr, ids);
     set_camera(*phong_, camera);
     set_shadow_uniforms();
     set_environment_uniforms(env);
@@ -126,7 +136,6 @@ void RasterRenderer::draw_scene(const Camera& camera, int skip, const CubeAtlas*
         set_object(*phong_, item, camera);
         set_material(scene_.materials[item.material], item);
         phong_->set("u_object_id", item.object_id);
-        phong_->set("u_prim_base", item.prim_base);
         const std::size_t object = item.object_id - 1;
         phong_->set("u_env_row", env && object < env_row_.size() ? env_row_[object] : -1);
         item.mesh->draw(item.first_vertex, item.vertex_count);
@@ -175,16 +184,16 @@ void RasterRenderer::draw_wires(const std::vector<DrawItem>& items, const Camera
 }
 
 void RasterRenderer::draw_ids(const Camera& camera) {
-    set_camera(ids_, camera);
-    ids_.set("u_prim_bits", id_layout_.shader_prim_bits());
+    Program& ids = ids_program();
+    set_camera(ids, camera);
+    ids.set("u_prim_bits", id_layout_.shader_prim_bits());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     for (const DrawItem& item : nearest_first(camera)) {
         if (item.wire) continue;  // the tracer's first hits are surfaces
-        set_object(ids_, item, camera);
-        ids_.set("u_object_id", item.object_id);
-        ids_.set("u_prim_base", item.prim_base);
+        set_object(ids, item, camera);
+        ids.set("u_object_id", item.object_id);
         item.mesh->draw(item.first_vertex, item.vertex_count);
     }
     check("RasterRenderer::draw_ids");

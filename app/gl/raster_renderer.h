@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "app/gl/cube_atlas.h"
 #include "app/gl/framebuffer.h"
@@ -93,15 +94,18 @@ class RasterRenderer {
     DepthRange depth_range(const Camera& camera) const { return gpu_.depth_range(camera); }
 
     // phong.frag compiled with or without each trick, and with texture lookups when the
-    // scene has textures (compiled when first asked for).
-    Program& phong(bool shadow_maps, bool environment_maps);
+    // scene has textures (compiled when first asked for); with `ids`, writing the item
+    // buffer too (into Framebuffer::Kind::kColourAndIds).
+    Program& phong(bool shadow_maps, bool environment_maps, bool ids = false);
 
   private:
     void set_camera(Program& program, const Camera& camera);
     std::vector<DrawItem> nearest_first(const Camera& camera);
     void draw_wires(const std::vector<DrawItem>& items, const Camera& camera);
     void set_material(const Material& m, const DrawItem& item);
-    void draw_scene(const Camera& camera, int skip, const CubeAtlas* env);
+    void draw_scene(const Camera& camera, int skip, const CubeAtlas* env, bool ids = false);
+    std::string id_define() const;
+    Program& ids_program() { return ids_variants_.get({id_define()}); }
     void ensure_shadow_maps();
     void set_shadow_uniforms();
     void ensure_environment_maps();
@@ -115,7 +119,7 @@ class RasterRenderer {
     std::vector<Texture> textures_;   // the scene's surface textures
     ProgramVariants phong_variants_;  // with and without each trick (phong.frag)
     Program* phong_ = nullptr;        // the variant draw_scene() is drawing with
-    Program ids_;
+    ProgramVariants ids_variants_;  // itembuffer.frag, for objects alone or with triangles
     Program wire_;
     Program shadow_;
     std::optional<Framebuffer> colour_target_;
