@@ -433,14 +433,14 @@ mutant item-buffer-lanes-unmasked core/mesh.cpp \
 mutant shared-ids-written-by-lines app/gl/raster_renderer.cpp \
     'if (drawing_ids_) drawing_ids_->draw_ids(false);' '' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*TheColourPassDrawsTheSameItemBuffer*'
-mutant edge-run-trusts-any-hit core/renderer.cpp \
+mutant edge-run-trusts-any-hit core/item_buffer_step.cpp \
     'if (hits[lane].found() && hits[lane].object + 1 == ib.object_id(at + lane))' \
     'if (hits[lane].found())' \
     rt_tests $(unit 'ItemBuffer.*')
-mutant edge-run-leaves-the-meshes-out core/renderer.cpp \
+mutant edge-run-leaves-the-meshes-out core/item_buffer_step.cpp \
     'if (mesh_count == 0) return on_edges;' 'return on_edges;' \
     rt_tests $(unit 'ItemBuffer.*')
-mutant edge-run-tests-only-the-edge core/renderer.cpp \
+mutant edge-run-tests-only-the-edge core/item_buffer_step.cpp \
     'scene.intersect_among(around.data(), count, lanes, hits, open);' \
     'scene.intersect_among(around.data(), count, lanes, hits, open & ~left);' \
     rt_tests $(unit 'ItemBuffer.*')
@@ -453,7 +453,7 @@ mutant whole-packet-misses-keep-their-t core/scene.cpp \
 mutant whole-packet-barycentrics-swapped core/scene.cpp \
     'hits[lane].b1 = on ? out.b1[lane] : 0.0f;' 'hits[lane].b1 = on ? out.b2[lane] : 0.0f;' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
-mutant objects-around-half-the-lanes core/renderer.cpp \
+mutant objects-around-half-the-lanes core/item_buffer_step.cpp \
     'return least(v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));' 'return v;' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant tile-rays-off-centre core/tile_rays.h \
@@ -691,18 +691,25 @@ mutant interior-run-sees-no-side-neighbour core/item_buffer.h \
     'const Ids differ = ((load(centre - 1) ^ id) | (load(centre + 1) ^ id) |' \
     'const Ids differ = ((load(centre + 1) ^ id) |' \
     rt_tests $(unit 'ItemBuffer.*')
-mutant item-buffer-run-never-falls-back core/renderer.cpp \
+mutant item-buffer-run-never-falls-back core/item_buffer_step.cpp \
     'const unsigned open = all & ~settled;' 'const unsigned open = 0;' \
     rt_tests $(unit 'ItemBuffer.*')
-mutant edge-pixels-look-along-their-row-only core/renderer.cpp \
+mutant inside-run-never-falls-back core/item_buffer_step.cpp \
+    'if (found != kAll)' 'if (false)' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant inside-run-takes-a-run-with-an-edge core/item_buffer_step.cpp \
+    'if (interior == kAll && n == kPacketWidth && tiny.lanes == 0 &&' \
+    'if (n == kPacketWidth && tiny.lanes == 0 &&' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant edge-pixels-look-along-their-row-only core/item_buffer_step.cpp \
     'for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {' \
     'for (int row = y; row <= y; ++row) {' \
     rt_tests $(unit 'ItemBuffer.*')
-mutant objects-around-drop-the-right-neighbours core/renderer.cpp \
+mutant objects-around-drop-the-right-neighbours core/item_buffer_step.cpp \
     'ids[vectors++] = (ib.object_ids(at + kPacketWidth) & in_span[1]) - 1u;' \
     'ids[vectors++] = (ib.object_ids(at + kPacketWidth) & Ids{}) - 1u;' \
     rt_tests $(unit 'ItemBuffer.*')
-mutant objects-around-first-found-not-cleared core/renderer.cpp \
+mutant objects-around-first-found-not-cleared core/item_buffer_step.cpp \
     'for (Ids& v : ids) v |= Ids(v == m);  // m is the least in every lane' \
     'for (Ids& v : ids) v |= Ids(v == m) & Ids{};' \
     rt_tests timeout 60 $(unit 'ItemBuffer.*')
@@ -831,12 +838,16 @@ mutant oracle-transform-normal core/transform.cpp \
 
 # Objects too small on the screen for the item buffer (core/small_objects.h): their
 # pixels are taken from the ids' trust and tested against them.
-mutant small-objects-pixels-still-trusted core/renderer.cpp \
+mutant small-objects-pixels-still-trusted core/item_buffer_step.cpp \
     'own_ids(scene, ib, at, n, lanes, hits, interior, !whole, left) & ~tiny.lanes;' \
     'own_ids(scene, ib, at, n, lanes, hits, interior, !whole, left);' \
     rt_tests $(unit 'ItemBuffer.*')
-mutant small-objects-not-tested core/renderer.cpp \
-    'scene.intersect_among(tiny.objects.data(), tiny.count, run.data(), lanes, hits, open);' '' \
+mutant small-objects-not-tested core/item_buffer_step.cpp \
+    'scene.intersect_among(tiny.objects.data(), tiny.count, lanes, hits, open);' '' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant inside-run-under-a-small-object core/item_buffer_step.cpp \
+    'if (interior == kAll && n == kPacketWidth && tiny.lanes == 0 &&' \
+    'if (interior == kAll && n == kPacketWidth &&' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant small-objects-none-small-enough core/small_objects.h \
     'static constexpr float kPixels = 6.0f;' 'static constexpr float kPixels = 1.0f;' \
@@ -877,7 +888,7 @@ mutant sphere-segments-cast-unclamped core/tessellate.cpp \
 mutant small-objects-span-unclamped core/small_objects.cpp \
     'std::ceil(std::clamp(lo - 0.5f, below, above))' 'std::ceil(lo - 0.5f)' \
     rt_tests $(unit 'ItemBuffer.*')
-mutant edge-spheres-right-side-not-read core/renderer.cpp \
+mutant edge-spheres-right-side-not-read core/item_buffer_step.cpp \
     'if (x == 0 || x + n == width) take(small.side(y));' 'if (x == 0) take(small.side(y));' \
     rt_tests $(unit 'ItemBuffer.*')
 

@@ -119,7 +119,7 @@ class RasterRenderer {
     std::vector<Texture> textures_;   // the scene's surface textures
     ProgramVariants phong_variants_;  // with and without each trick (phong.frag)
     Program* phong_ = nullptr;        // the variant draw_scene() is drawing with
-    ProgramVariants ids_variants_;  // itembuffer.frag, for objects alone or with triangles
+    ProgramVariants ids_variants_;    // itembuffer.frag, for objects alone or with triangles
     Program wire_;
     Program shadow_;
     std::optional<Framebuffer> colour_target_;

@@ -297,21 +297,6 @@ TEST(ItemBuffer, ARunsCheckIsEachPixelsOwn) {
     }
 }
 
-// The item buffer a perfect rasteriser would give: each pixel centre's first hit, traced.
-ItemBuffer traced_item_buffer(const Scene& scene) {
-    const Camera& camera = scene.camera;
-    ItemBuffer ib(camera.cols, camera.rows);
-    for (int y = 0; y < camera.rows; ++y) {
-        for (int x = 0; x < camera.cols; ++x) {
-            Hit hit;
-            if (!scene.intersect(camera.ray(x, y), hit)) continue;
-            ib.ids[ib.index(x, y)] = hit.object + 1;
-            ib.prim[ib.index(x, y)] = hit.prim;
-        }
-    }
-    return ib;
-}
-
 // A frame from a perfect item buffer is the frame from scratch, bit for bit (at a size
 // that leaves short runs at the tiles' right ends): the pixels on edges tested against
 // the objects named around them, the others against what they name.
@@ -319,7 +304,7 @@ TEST(ItemBuffer, AFrameFromAPerfectItemBufferIsTheFrameFromScratch) {
     for (const std::string& name : test::shipped_scene_names()) {
         const Scene scene(test::shipped_scene(name, 101, 57));
         const Camera& camera = scene.camera;
-        const ItemBuffer ib = traced_item_buffer(scene);
+        const ItemBuffer ib = test::traced_item_buffer(scene);
         RenderOptions options;
         options.threads = 2;
         RenderStats with_stats;
@@ -354,7 +339,7 @@ TEST(ItemBuffer, AnEdgePixelFindsTheObjectNamedNextToIt) {
     for (const char* name : {"whitted.json", "cornell.json", "tutorial.json"}) {
         const Scene scene(test::shipped_scene(name, 160, 90));
         const Camera& camera = scene.camera;
-        const ItemBuffer perfect = traced_item_buffer(scene);
+        const ItemBuffer perfect = test::traced_item_buffer(scene);
         ItemBuffer blanked = perfect;
         for (int y = 0; y < camera.rows; ++y)
             for (int x = 0; x < camera.cols; ++x)
@@ -384,47 +369,6 @@ TEST(ItemBuffer, AnEdgePixelFindsTheObjectNamedNextToIt) {
     }
 }
 
-// In a run with an edge, the spheres and planes around are tested once for all its
-// pixels, a mesh only where what a pixel names did not meet it. Here a pixel inside a box
-// (a mesh) and its four neighbours name a sphere that lies elsewhere, and a pixel of the
-// run names the floor behind the box: the floor meets the pixel's ray, the sphere does
-// not, so the pixel is not settled by what it names, and the box, named around it, is
-// still tested (the floor alone would show through the box).
-TEST(ItemBuffer, APixelWhoseNamedObjectMissesStillMeetsTheMeshAroundIt) {
-    SceneDescription d;
-    d.materials.emplace_back();
-    d.materials.emplace_back();
-    d.materials.back().kd = vec3(0.1f, 0.9f, 0.2f);
-    d.meshes.push_back(
-        test::box_mesh(vec3(-1.5f, -2, -0.5f), vec3(1.5f, 1, 0.5f), test::Winding::kOutward));
-    d.objects.push_back(Object{"floor", Plane{{0, 1, 0}, -2}, 0, {}});
-    d.objects.push_back(Object{"box", MeshRef{0, true}, 1, {}});
-    d.objects.push_back(Object{"ball", Sphere{{6, 4, -8}, 0.5f}, 0, {}});
-    d.lights.push_back(Light{Light::Type::kPoint, {3, 6, 6}, {0, -1, 0}, vec3(1.0f)});
-    d.camera = Camera::look_at({0, 3, 9}, {0, 0, 0}, {0, 1, 0}, 45.0f, 64, 48);
-    const Scene scene(std::move(d));
-    ItemBuffer ib = traced_item_buffer(scene);
-    constexpr std::uint32_t kFloor = 1, kBox = 2, kBall = 3;
-    int checked = 0;
-    RenderOptions options;
-    options.threads = 1;
-    const Image from_scratch = render(scene, options);
-    for (const int x : {28, 36}) {  // inside runs of eight (24 .. 31, 32 .. 39)
-        const int y = 24;
-        ASSERT_EQ(ib.ids[ib.index(x, y)], kBox);
-        ItemBuffer named = ib;
-        for (const auto& [dx, dy] : {std::pair{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}})
-            named.ids[named.index(x + dx, y + dy)] = kBall;
-        named.ids[named.index(x + 3, y)] = kFloor;
-        const Image with = render(scene, options, nullptr, {}, {}, &named);
-        EXPECT_EQ(with.at(x, y), from_scratch.at(x, y)) << x;
-        Hit floor;
-        ASSERT_TRUE(scene.intersect_object(0, scene.camera.ray(x, y), floor));  // behind the box
-        ++checked;
-    }
-    EXPECT_EQ(checked, 2);
-}
-
 // A sphere under a couple of pixels across may cover pixel centres the raster's
 // tessellation does not (many_spheres far off), and then nothing around names it: the
 // renderer tests such objects itself where their screen boxes lie (core/small_objects.h).
@@ -449,8 +393,8 @@ TEST(ItemBuffer, AnObjectTooSmallForTheRasterIsFoundWhereItLies) {
     const Scene scene(std::move(d)), missed(std::move(without_small));
     const SmallObjects small(scene, scene.camera);
     EXPECT_EQ(small.size(), 24u);  // the specks, not the ball, nor the floor
-    ItemBuffer ib = traced_item_buffer(missed);
-    const ItemBuffer perfect = traced_item_buffer(scene);
+    ItemBuffer ib = test::traced_item_buffer(missed);
+    const ItemBuffer perfect = test::traced_item_buffer(scene);
     int speck_pixels = 0;
     for (std::size_t i = 0; i < perfect.ids.size(); ++i) speck_pixels += perfect.ids[i] > 2;
     EXPECT_GT(speck_pixels, 10);
@@ -508,13 +452,14 @@ TEST(ItemBuffer, ASphereCutByTheImagesEdgeIsFoundAlongIt) {
         std::unique_ptr<Scene> scene;
         for (int k = 0; k < 2000; ++k, centre += step) {
             scene = scene_with(centre, true);
-            if (ball_pixels(traced_item_buffer(*scene), side.column, side.outermost) > 0) break;
+            if (ball_pixels(test::traced_item_buffer(*scene), side.column, side.outermost) > 0)
+                break;
         }
-        const ItemBuffer perfect = traced_item_buffer(*scene);
+        const ItemBuffer perfect = test::traced_item_buffer(*scene);
         const int pixels = ball_pixels(perfect, side.column, side.outermost);
         ASSERT_GT(pixels, 0) << side.name << ": the ball never reaches the image";
         ASSERT_EQ(ball_pixels(perfect, side.column, side.next), 0) << side.name;
-        ItemBuffer ib = traced_item_buffer(*scene_with(centre, false));  // named nowhere
+        ItemBuffer ib = test::traced_item_buffer(*scene_with(centre, false));  // named nowhere
         const Image from_scratch = render(*scene, options);
         const Image with = render(*scene, options, nullptr, {}, {}, &ib);
         int differ = 0;

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/item_buffer.h"
 #include "core/scene.h"
 #include "core/scene_loader.h"
 
@@ -31,6 +32,21 @@ inline std::vector<std::string> shipped_scene_names() {
     for (const auto& entry : std::filesystem::directory_iterator(source_dir() / "assets/scenes"))
         if (entry.path().extension() == ".json") names.push_back(entry.path().filename().string());
     return names;
+}
+
+// The item buffer a perfect rasteriser would give: each pixel centre's first hit, traced.
+inline ItemBuffer traced_item_buffer(const Scene& scene) {
+    const Camera& camera = scene.camera;
+    ItemBuffer ib(camera.cols, camera.rows);
+    for (int y = 0; y < camera.rows; ++y) {
+        for (int x = 0; x < camera.cols; ++x) {
+            Hit hit;
+            if (!scene.intersect(camera.ray(x, y), hit)) continue;
+            ib.ids[ib.index(x, y)] = hit.object + 1;
+            ib.prim[ib.index(x, y)] = hit.prim;
+        }
+    }
+    return ib;
 }
 
 // A shipped scene (assets/scenes/NAME) at another resolution, as a description to build.
