@@ -43,9 +43,7 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
     constexpr std::uint32_t kNone = ItemBuffer::kEmpty - 1u;  // the largest
     const int left = std::max(0, x0 - 1), right = std::min(ib.width - 1, x1 + 1);
     const int span = right - left + 1;  // at most kPacketWidth + 2 <= kRow
-    Ids ids[6];
-    for (Ids& v : ids) v = Ids{} + kNone;
-    int vectors = 0;
+    Ids ids[6];  // rows y - 1, y and y + 1, two each: kNone beyond the image
     static const Ids kLane = [] {
         Ids lane{};
         for (int k = 0; k < kPacketWidth; ++k) lane[k] = static_cast<std::uint32_t>(k);
@@ -53,17 +51,25 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
     }();
     const Ids in_span[2] = {Ids(kLane < Ids{} + static_cast<std::uint32_t>(span)),
                             Ids(kLane + kPacketWidth < Ids{} + static_cast<std::uint32_t>(span))};
-    for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {
+    // Each row's two vectors at fixed places, so that they stay in registers (counted in
+    // turn, they went through memory).
+#pragma GCC unroll 3
+    for (int d = 0; d < 3; ++d) {
+        const int row = y - 1 + d;
+        if (row < 0 || row >= ib.height) {
+            ids[2 * d] = ids[2 * d + 1] = Ids{} + kNone;
+            continue;
+        }
         const std::size_t at = ib.index(left, row);
         if (left + kRow <= ib.width) {  // two whole vectors in the row: the span's lanes kept
-            ids[vectors++] = (ib.object_ids(at) & in_span[0]) - 1u;
-            ids[vectors++] = (ib.object_ids(at + kPacketWidth) & in_span[1]) - 1u;
+            ids[2 * d] = (ib.object_ids(at) & in_span[0]) - 1u;
+            ids[2 * d + 1] = (ib.object_ids(at + kPacketWidth) & in_span[1]) - 1u;
             continue;
         }
         std::uint32_t padded[kRow] = {};  // kEmpty beyond the span
         std::memcpy(padded, &ib.ids[at], static_cast<std::size_t>(span) * sizeof padded[0]);
-        ids[vectors++] = (ItemBuffer::load(padded) >> ib.prim_bits) - 1u;
-        ids[vectors++] = (ItemBuffer::load(padded + kPacketWidth) >> ib.prim_bits) - 1u;
+        ids[2 * d] = (ItemBuffer::load(padded) >> ib.prim_bits) - 1u;
+        ids[2 * d + 1] = (ItemBuffer::load(padded + kPacketWidth) >> ib.prim_bits) - 1u;
     }
     int count = 0;
     for (;;) {
@@ -166,7 +172,9 @@ unsigned own_ids(const Scene& scene, const ItemBuffer& ib, std::size_t at, int n
         own_ids(scene, ib, at, n, lanes, hits, interior, !whole, left) & ~tiny.lanes;
     const unsigned open = all & ~settled;
     if (open == 0) return 0;
-    for (unsigned k = open; k != 0; k &= k - 1) hits[__builtin_ctz(k)] = Hit{};
+    // The open pixels' records are as reset_hits left them (own_ids writes a miss as
+    // Hit{}), but for those found under something small, tested again with it.
+    for (unsigned k = open & tiny.lanes; k != 0; k &= k - 1) hits[__builtin_ctz(k)] = Hit{};
     const int on_edges = std::popcount(whole ? open : all & ~interior);
     if (tiny.crowd) {
         std::array<Ray, kPacketWidth> run;  // the Rays only here, where the scene's tree reads them

@@ -702,12 +702,12 @@ mutant inside-run-takes-a-run-with-an-edge core/item_buffer_step.cpp \
     'if (n == kPacketWidth && tiny.lanes == 0 &&' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant edge-pixels-look-along-their-row-only core/item_buffer_step.cpp \
-    'for (int row = std::max(0, y - 1); row <= std::min(ib.height - 1, y + 1); ++row) {' \
-    'for (int row = y; row <= y; ++row) {' \
+    'const int row = y - 1 + d;' \
+    'const int row = y;' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant objects-around-drop-the-right-neighbours core/item_buffer_step.cpp \
-    'ids[vectors++] = (ib.object_ids(at + kPacketWidth) & in_span[1]) - 1u;' \
-    'ids[vectors++] = (ib.object_ids(at + kPacketWidth) & Ids{}) - 1u;' \
+    'ids[2 * d + 1] = (ib.object_ids(at + kPacketWidth) & in_span[1]) - 1u;' \
+    'ids[2 * d + 1] = (ib.object_ids(at + kPacketWidth) & Ids{}) - 1u;' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant objects-around-first-found-not-cleared core/item_buffer_step.cpp \
     'for (Ids& v : ids) v |= Ids(v == m);  // m is the least in every lane' \
