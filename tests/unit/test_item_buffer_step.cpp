@@ -15,7 +15,10 @@ namespace rt {
 namespace {
 
 constexpr std::uint32_t kFloor = 1, kBox = 2, kBall = 3;  // object index + 1, as the ids hold them
-constexpr int kRunX = 24, kRunY = 24;                     // a run of eight inside the box: 24 .. 31
+// A run inside the box: kRunX .. kRunX + kPacketWidth - 1 (eight pixels under AVX, four
+// with SSE alone: the tests below cover one run, whatever its width).
+constexpr int kRunX = 24, kRunY = 24;
+constexpr int kRunEnd = kRunX + kPacketWidth - 1;  // its last pixel
 
 Scene box_scene() {
     SceneDescription d;
@@ -50,7 +53,7 @@ void expect_row_as_traced(const Scene& scene, const ItemBuffer& ids, int x0, int
 TEST(ItemBuffer, APixelWhoseNamedObjectMissesStillMeetsTheMeshAroundIt) {
     const Scene scene = box_scene();
     const ItemBuffer ib = test::traced_item_buffer(scene);
-    for (const int x : {28, 36}) {  // inside runs of eight (24 .. 31, 32 .. 39)
+    for (const int x : {28, 36}) {  // inside runs (24 .. 31 and 32 .. 39, or of four: 28 .. 31, 36 .. 39)
         ASSERT_EQ(ib.ids[ib.index(x, kRunY)], kBox);
         ItemBuffer named = ib;
         for (const auto& [dx, dy] : {std::pair{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}})
@@ -70,7 +73,7 @@ TEST(ItemBuffer, APixelWhoseNamedObjectMissesStillMeetsTheMeshAroundIt) {
 TEST(ItemBuffer, ARunInsideTheRegionOfAnObjectItsRaysMissIsTestedAgainstWhatIsAround) {
     const Scene scene = box_scene();
     ItemBuffer ib = test::traced_item_buffer(scene);
-    for (int x = kRunX - 1; x <= kRunX + 8; ++x) {
+    for (int x = kRunX - 1; x <= kRunEnd + 1; ++x) {
         for (int y = kRunY - 1; y <= kRunY + 1; ++y) {
             ASSERT_EQ(ib.ids[ib.index(x, y)], kBox) << x << "," << y;
             Hit ball;
@@ -79,8 +82,8 @@ TEST(ItemBuffer, ARunInsideTheRegionOfAnObjectItsRaysMissIsTestedAgainstWhatIsAr
         }
     }
     ib.ids[ib.index(kRunX - 1, kRunY - 1)] = kBox;  // a diagonal neighbour: the run stays whole
-    for (int x = kRunX; x < kRunX + 8; ++x) ASSERT_TRUE(ib.interior(x, kRunY)) << x;
-    expect_row_as_traced(scene, ib, kRunX, kRunX + 7);
+    for (int x = kRunX; x <= kRunEnd; ++x) ASSERT_TRUE(ib.interior(x, kRunY)) << x;
+    expect_row_as_traced(scene, ib, kRunX, kRunEnd);
 }
 
 // A run whose pixels all name one object but whose neighbours above and below name
@@ -90,13 +93,13 @@ TEST(ItemBuffer, ARunInsideTheRegionOfAnObjectItsRaysMissIsTestedAgainstWhatIsAr
 TEST(ItemBuffer, ARunThatNamesOneObjectOnAnEdgeIsTestedAgainstWhatIsAround) {
     const Scene scene = box_scene();
     ItemBuffer ib = test::traced_item_buffer(scene);
-    for (int x = kRunX; x < kRunX + 8; ++x) {
+    for (int x = kRunX; x <= kRunEnd; ++x) {
         ASSERT_EQ(ib.ids[ib.index(x, kRunY)], kBox) << x;
         Hit floor;
         ASSERT_TRUE(scene.intersect_object(0, scene.camera.ray(x, kRunY), floor)) << x;
         ib.ids[ib.index(x, kRunY)] = kFloor;
     }
-    expect_row_as_traced(scene, ib, kRunX, kRunX + 7);
+    expect_row_as_traced(scene, ib, kRunX, kRunEnd);
 }
 
 }  // namespace
