@@ -43,7 +43,8 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
     constexpr std::uint32_t kNone = ItemBuffer::kEmpty - 1u;  // the largest
     const int left = std::max(0, x0 - 1), right = std::min(ib.width - 1, x1 + 1);
     const int span = right - left + 1;  // at most kPacketWidth + 2 <= kRow
-    Ids ids[6];  // rows y - 1, y and y + 1, two each: kNone beyond the image
+    // Rows y - 1, y and y + 1, two vectors each; kNone beyond the image.
+    Ids ids[6];
     static const Ids kLane = [] {
         Ids lane{};
         for (int k = 0; k < kPacketWidth; ++k) lane[k] = static_cast<std::uint32_t>(k);

@@ -53,7 +53,8 @@ void expect_row_as_traced(const Scene& scene, const ItemBuffer& ids, int x0, int
 TEST(ItemBuffer, APixelWhoseNamedObjectMissesStillMeetsTheMeshAroundIt) {
     const Scene scene = box_scene();
     const ItemBuffer ib = test::traced_item_buffer(scene);
-    for (const int x : {28, 36}) {  // inside runs (24 .. 31 and 32 .. 39, or of four: 28 .. 31, 36 .. 39)
+    // Inside runs 24 .. 31 and 32 .. 39 (of four: 28 .. 31 and 36 .. 39).
+    for (const int x : {28, 36}) {
         ASSERT_EQ(ib.ids[ib.index(x, kRunY)], kBox);
         ItemBuffer named = ib;
         for (const auto& [dx, dy] : {std::pair{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}})
