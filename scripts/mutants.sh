@@ -698,8 +698,11 @@ mutant inside-run-never-falls-back core/item_buffer_step.cpp \
     'if (found != kAll)' 'if (false)' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant inside-run-takes-a-run-with-an-edge core/item_buffer_step.cpp \
-    'if (interior == kAll && n == kPacketWidth && tiny.lanes == 0 &&' \
-    'if (n == kPacketWidth && tiny.lanes == 0 &&' \
+    'if (interior == kAll && n == kPacketWidth && tiny.lanes == 0) {' \
+    'if (n == kPacketWidth && tiny.lanes == 0) {' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant background-run-keeps-old-hits core/item_buffer_step.cpp \
+    'reset_hits(&hits[i], kPacketWidth);  // the background, and only it around' ';' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant edge-pixels-look-along-their-row-only core/item_buffer_step.cpp \
     'const int row = y - 1 + d;' \
@@ -846,8 +849,8 @@ mutant small-objects-not-tested core/item_buffer_step.cpp \
     'scene.intersect_among(tiny.objects.data(), tiny.count, lanes, hits, open);' '' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant inside-run-under-a-small-object core/item_buffer_step.cpp \
-    'if (interior == kAll && n == kPacketWidth && tiny.lanes == 0 &&' \
-    'if (interior == kAll && n == kPacketWidth &&' \
+    'if (interior == kAll && n == kPacketWidth && tiny.lanes == 0) {' \
+    'if (interior == kAll && n == kPacketWidth) {' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant small-objects-none-small-enough core/small_objects.h \
     'static constexpr float kPixels = 6.0f;' 'static constexpr float kPixels = 1.0f;' \
