@@ -25,11 +25,15 @@ struct Hit {
     bool found() const { return object != kNoObject; }
 };
 
-// hits[0 .. n) made fresh (Hit{}); a full packet of eight as one copy of eight fresh
-// records (five vector stores), not field by field.
+// hits[0 .. n) made fresh (Hit{}); a full packet (eight, or sixteen) as one copy of fresh
+// records (five or ten vector stores), not field by field.
 inline void reset_hits(Hit* hits, std::size_t n) {
-    static constexpr Hit kFresh[8]{};
+    static constexpr Hit kFresh[16]{};
     if (n == 8) {
+        std::memcpy(hits, kFresh, 8 * sizeof(Hit));
+        return;
+    }
+    if (n == 16) {
         std::memcpy(hits, kFresh, sizeof kFresh);
         return;
     }

@@ -19,12 +19,21 @@ V least(V a, V b) {
 template <class V>
 V least_in_every_lane(V v) {
     constexpr int kWidth = sizeof(V) / sizeof(v[0]);
-    if constexpr (kWidth == 8) {
+    if constexpr (kWidth == 16) {
+        v = least(
+            v, __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7));
+        v = least(
+            v, __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11));
+        v = least(
+            v, __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5, 10, 11, 8, 9, 14, 15, 12, 13));
+        return least(
+            v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6, 9, 8, 11, 10, 13, 12, 15, 14));
+    } else if constexpr (kWidth == 8) {
         v = least(v, __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3));
         v = least(v, __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5));
         return least(v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));
     } else {
-        static_assert(kWidth == 4, "four or eight lanes (core/simd.h)");
+        static_assert(kWidth == 4, "four, eight or sixteen lanes (core/simd.h)");
         v = least(v, __builtin_shufflevector(v, v, 2, 3, 0, 1));
         return least(v, __builtin_shufflevector(v, v, 1, 0, 3, 2));
     }

@@ -68,8 +68,18 @@ inline constexpr int kBvhWidth = 8;
 inline constexpr int kBvhWidth = 4;
 #endif
 // Rays traced together (core/wide_bvh_packet.h) and shaded together (core/renderer.cpp):
-// eight under AVX (Embree's rtcIntersect8 is their yardstick), else four.
-#if defined(__AVX__)
+// eight under AVX (Embree's rtcIntersect8 is their yardstick), else four. A build may name
+// the width for measurements (-DRTVIEW_PACKET_WIDTH=16 in CMAKE_CXX_FLAGS, under AVX-512;
+// rtbench then compares with rtcIntersect16): on Zen 5, packets of sixteen took whitted's
+// and many_spheres' frames 0.85-0.86x of the time, but the item buffer's step on
+// many_spheres 1.3x, so eight stay (docs/BENCHMARKS.md, "thirty-fourth session").
+#if defined(RTVIEW_PACKET_WIDTH)
+#if !(RTVIEW_PACKET_WIDTH == 4 || (RTVIEW_PACKET_WIDTH == 8 && defined(__AVX__)) || \
+      (RTVIEW_PACKET_WIDTH == 16 && defined(__AVX512F__)))
+#error "RTVIEW_PACKET_WIDTH: 4, 8 under AVX, 16 under AVX-512"
+#endif
+inline constexpr int kPacketWidth = RTVIEW_PACKET_WIDTH;
+#elif defined(__AVX__)
 inline constexpr int kPacketWidth = 8;
 #else
 inline constexpr int kPacketWidth = 4;
@@ -132,6 +142,10 @@ inline unsigned bits(Mask8 m) {
 inline Float16 vmin(Float16 a, Float16 b) { return _mm512_mask_min_ps(a, 0xffff, a, b); }
 inline Float16 vmax(Float16 a, Float16 b) { return _mm512_mask_max_ps(a, 0xffff, a, b); }
 inline Float16 vabs(Float16 a) { return vmax(a, -a); }
+inline Float16 vsqrt(Float16 a) { return _mm512_mask_sqrt_ps(a, 0xffff, a); }
+inline Float16 vfloor(Float16 a) {
+    return _mm512_mask_roundscale_ps(a, 0xffff, a, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+}
 inline unsigned bits(Mask16 m) {
     return static_cast<unsigned>(_mm512_movepi32_mask(reinterpret_cast<__m512i>(m)));
 }
@@ -237,6 +251,17 @@ inline void transpose_rows(const float* const* rows, typename Lanes<N>::Float (&
         return;
     }
 #endif
+#if defined(__AVX512F__)
+    if constexpr (N == 16) {  // two halves of eight, side by side
+        typename Lanes<8>::Float low[4], high[4];
+        transpose_rows<8, Floats>(rows, low);
+        transpose_rows<8, Floats>(rows + 8, high);
+        for (int c = 0; c < 4; ++c)
+            out[c] = __builtin_shufflevector(low[c], high[c], 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
+                                             12, 13, 14, 15);
+        return;
+    }
+#endif
 #if defined(__SSE__)
     if constexpr (N == 4) {
         __m128 r0 = load_row<Floats>(rows[0]), r1 = load_row<Floats>(rows[1]);
@@ -267,6 +292,16 @@ inline float hmin(Float8 v) {
 inline float hmax(Float8 v) {
     return hmax(
         vmax(__builtin_shufflevector(v, v, 0, 1, 2, 3), __builtin_shufflevector(v, v, 4, 5, 6, 7)));
+}
+#endif
+#if defined(__AVX512F__)
+inline float hmin(Float16 v) {
+    return hmin(vmin(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7),
+                     __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15)));
+}
+inline float hmax(Float16 v) {
+    return hmax(vmax(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7),
+                     __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15)));
 }
 #endif
 

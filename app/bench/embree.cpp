@@ -106,16 +106,20 @@ class Embree : public Structure {
 };
 
 // The same scene, the rays handed over kPacketWidth at a time: rtcIntersect8 /
-// rtcOccluded8 (rtcIntersect4 / rtcOccluded4 where our packets are 4 wide).
+// rtcOccluded8 (rtcIntersect4 / rtcOccluded4 where our packets are 4 wide, rtcIntersect16 /
+// rtcOccluded16 where a build makes them 16 wide: core/simd.h).
 class EmbreePackets : public Embree {
   public:
     using Embree::Embree;
     std::string name() const override { return "embree-packets"; }
     bool packets() const override { return true; }
 
-    static constexpr bool kEight = rt::kPacketWidth == 8;
-    using RayHitN = std::conditional_t<kEight, RTCRayHit8, RTCRayHit4>;
-    using RayN = std::conditional_t<kEight, RTCRay8, RTCRay4>;
+    static_assert(rt::kPacketWidth == 4 || rt::kPacketWidth == 8 || rt::kPacketWidth == 16);
+    using RayHitN =
+        std::conditional_t<rt::kPacketWidth == 16, RTCRayHit16,
+                           std::conditional_t<rt::kPacketWidth == 8, RTCRayHit8, RTCRayHit4>>;
+    using RayN = std::conditional_t<rt::kPacketWidth == 16, RTCRay16,
+                                    std::conditional_t<rt::kPacketWidth == 8, RTCRay8, RTCRay4>>;
     void intersect_packet(const rt::Ray* rays, const float* t_max, int count,
                           Result* out) const override {
         RTCIntersectContext context;
@@ -148,11 +152,17 @@ class EmbreePackets : public Embree {
     void intersect_n(const int* valid, RTCIntersectContext* c, RTCRayHit4* rh) const {
         rtcIntersect4(valid, scene_, c, rh);
     }
+    void intersect_n(const int* valid, RTCIntersectContext* c, RTCRayHit16* rh) const {
+        rtcIntersect16(valid, scene_, c, rh);
+    }
     void occluded_n(const int* valid, RTCIntersectContext* c, RTCRay8* r) const {
         rtcOccluded8(valid, scene_, c, r);
     }
     void occluded_n(const int* valid, RTCIntersectContext* c, RTCRay4* r) const {
         rtcOccluded4(valid, scene_, c, r);
+    }
+    void occluded_n(const int* valid, RTCIntersectContext* c, RTCRay16* r) const {
+        rtcOccluded16(valid, scene_, c, r);
     }
     static void fill(RayN& r, const rt::Ray* rays, const float* t_max, int count, int* valid) {
         for (int i = 0; i < rt::kPacketWidth; ++i) {
