@@ -71,8 +71,9 @@ inline constexpr int kBvhWidth = 4;
 // eight under AVX (Embree's rtcIntersect8 is their yardstick), else four. A build may name
 // the width for measurements (-DRTVIEW_PACKET_WIDTH=16 in CMAKE_CXX_FLAGS, under AVX-512;
 // rtbench then compares with rtcIntersect16): on Zen 5, packets of sixteen took whitted's
-// and many_spheres' frames 0.85-0.86x of the time, but the item buffer's step on
-// many_spheres 1.3x, so eight stay (docs/BENCHMARKS.md, "thirty-fourth session").
+// and many_spheres' frames 0.85-0.86x of the time, but the item buffer's primary speed-up
+// on many_spheres fell from 2.55x to about 2.0x, so eight stay (docs/BENCHMARKS.md,
+// "thirty-fourth session").
 #if defined(RTVIEW_PACKET_WIDTH)
 #if !(RTVIEW_PACKET_WIDTH == 4 || (RTVIEW_PACKET_WIDTH == 8 && defined(__AVX__)) || \
       (RTVIEW_PACKET_WIDTH == 16 && defined(__AVX512F__)))

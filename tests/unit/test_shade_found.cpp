@@ -173,8 +173,8 @@ TEST(ShadeFound, EachLaneIsShadeHitBitForBitDepthAfterDepth) {
 // lanes (shade_found) and alone (shade_hit).
 TEST(ShadeFound, FeelersDoNotMeetTheLargeBallTheyLeave) {
     SceneDescription desc;
-    desc.camera = Camera::look_at({0, 10, 5}, {0, 0, 0}, {0, 1, 0}, 60.0f, 48, 36);  // rows of
-    // whole packets of 4, 8 or 16
+    // Rows of whole packets, of 4, 8 or 16.
+    desc.camera = Camera::look_at({0, 10, 5}, {0, 0, 0}, {0, 1, 0}, 60.0f, 48, 36);
     desc.materials = {test::plain(vec3(0.1f), vec3(0.8f), vec3(0.3f), 20.0f)};
     desc.objects.push_back(Object{"planet", Sphere{{0, -1000, 0}, 1000}, 0, {}});
     desc.lights.push_back(Light{Light::Type::kPoint, {50, 0.5f, 0}, {}, vec3(0.7f)});
