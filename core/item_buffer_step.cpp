@@ -15,27 +15,32 @@ V least(V a, V b) {
     return a < b ? a : b;
 }
 
-// The least of v's lanes in every lane: halvings, a lane against the one across.
 template <class V>
-V least_in_every_lane(V v) {
+V greatest(V a, V b) {
+    return a < b ? b : a;
+}
+
+// op over all of v's lanes, in every lane: halvings, a lane against the one across.
+template <class V, class Op>
+V in_every_lane(V v, Op op) {
     constexpr int kWidth = sizeof(V) / sizeof(v[0]);
     if constexpr (kWidth == 16) {
-        v = least(
-            v, __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7));
-        v = least(
-            v, __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11));
-        v = least(
-            v, __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5, 10, 11, 8, 9, 14, 15, 12, 13));
-        return least(
+        v = op(v,
+               __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7));
+        v = op(v,
+               __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11));
+        v = op(v,
+               __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5, 10, 11, 8, 9, 14, 15, 12, 13));
+        return op(
             v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6, 9, 8, 11, 10, 13, 12, 15, 14));
     } else if constexpr (kWidth == 8) {
-        v = least(v, __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3));
-        v = least(v, __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5));
-        return least(v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));
+        v = op(v, __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3));
+        v = op(v, __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5));
+        return op(v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));
     } else {
         static_assert(kWidth == 4, "four, eight or sixteen lanes (core/simd.h)");
-        v = least(v, __builtin_shufflevector(v, v, 2, 3, 0, 1));
-        return least(v, __builtin_shufflevector(v, v, 1, 0, 3, 2));
+        v = op(v, __builtin_shufflevector(v, v, 2, 3, 0, 1));
+        return op(v, __builtin_shufflevector(v, v, 1, 0, 3, 2));
     }
 }
 
@@ -81,11 +86,29 @@ int objects_around(const ItemBuffer& ib, int x0, int x1, int y, std::uint32_t* o
         ids[2 * d] = (ItemBuffer::load(padded) >> ib.prim_bits) - 1u;
         ids[2 * d + 1] = (ItemBuffer::load(padded + kPacketWidth) >> ib.prim_bits) - 1u;
     }
+    // Most runs on an edge name one or two objects: the least index and the greatest
+    // (kNone, wrapped to 0 by adding one, left out) found side by side, not one after the
+    // other, and where every id is one of them or kNone, they are the answer (many_spheres:
+    // the step took 4 % less).
+    const auto fold = [&](auto op, std::uint32_t add) {
+        return in_every_lane(op(op(op(ids[0] + add, ids[1] + add), op(ids[2] + add, ids[3] + add)),
+                                op(ids[4] + add, ids[5] + add)),
+                             op)[0];
+    };
+    const std::uint32_t lo = fold(least<Ids>, 0u), hi = fold(greatest<Ids>, 1u) - 1u;
+    if (lo == kNone) return 0;
+    out[0] = lo;
+    if (hi == lo) return 1;
+    Ids others{};
+    for (const Ids& v : ids) others |= Ids(v != lo) & Ids(v != hi) & Ids(v != kNone);
+    if (bits(others != Ids{}) == 0) {
+        out[1] = hi;
+        return 2;
+    }
     int count = 0;
     for (;;) {
-        const Ids m = least_in_every_lane(
-            least(least(least(ids[0], ids[1]), least(ids[2], ids[3])), least(ids[4], ids[5])));
-        const std::uint32_t object = m[0];
+        const std::uint32_t object = fold(least<Ids>, 0u);
+        const Ids m = Ids{} + object;
         if (object == kNone) return count;
         out[count++] = object;
         for (Ids& v : ids) v |= Ids(v == m);  // m is the least in every lane
@@ -203,7 +226,7 @@ unsigned own_ids(const Scene& scene, const ItemBuffer& ib, std::size_t at, int n
         count = kept;
     }
     scene.intersect_among(around.data(), count, lanes, hits, open);
-    scene.intersect_among(tiny.objects.data(), tiny.count, lanes, hits, open);
+    if (tiny.count > 0) scene.intersect_among(tiny.objects.data(), tiny.count, lanes, hits, open);
     if (mesh_count == 0) return on_edges;
     unsigned trusted = 0;  // met what they name, inside its region: as own_ids leaves them
     for (unsigned k = left & open; k != 0; k &= k - 1) {

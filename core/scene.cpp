@@ -288,28 +288,34 @@ unsigned Scene::intersect_among(const std::uint32_t* among, int count,
     if (lanes == 0) return 0;
     unsigned found = 0;
     // The rays' closest hits as lanes while planes, spheres and triangles are tested; in
-    // their records while a mesh's tree is walked, with the rays as Rays.
-    std::optional<ClosestLanes> best;
-    std::array<Ray, kPacketWidth> as_rays;
-    bool have_rays = false;
+    // their records while a mesh's tree is walked, with the rays as Rays (made at the first
+    // mesh: made, or even default-constructed, for every call, they and an optional
+    // ClosestLanes were a sixth of the instructions of the item buffer's step on
+    // many_spheres, whose edges call this for two or three spheres).
+    ClosestLanes best;
+    bool open = false;  // best holds hits not yet written to their records
     for (int k = 0; k < count; ++k) {
         const std::uint32_t object = among[k];
         if (object >= objects.size()) continue;
         if (!std::holds_alternative<MeshRef>(objects[object].shape)) {
-            if (!best) best = ClosestLanes::within(hits, lanes);
-            found |= analytic_lanes(object, rays, lanes, *best);
+            if (!open) best = ClosestLanes::within(hits, lanes), open = true;
+            found |= analytic_lanes(object, rays, lanes, best);
             continue;
         }
-        if (best) best->write(hits), best.reset();
-        if (!have_rays) {
-            for (unsigned rest = lanes; rest != 0; rest &= rest - 1)
-                as_rays[__builtin_ctz(rest)] = rays.lane(__builtin_ctz(rest));
-            have_rays = true;
-        }
-        found |= intersect_object_packet(object, as_rays.data(), hits, lanes);  // its own tree
+        if (open) best.write(hits), open = false;
+        found |= mesh_among(object, rays, hits, lanes);
     }
-    if (best) best->write(hits);
+    if (open) best.write(hits);
     return found;
+}
+
+// A mesh's tree walked for the rays of `lanes` (Scene::intersect_among's), as Rays.
+unsigned Scene::mesh_among(std::uint32_t object, const RayLanes<kPacketWidth>& rays, Hit* hits,
+                           unsigned lanes) const {
+    std::array<Ray, kPacketWidth> as_rays;
+    for (unsigned rest = lanes; rest != 0; rest &= rest - 1)
+        as_rays[__builtin_ctz(rest)] = rays.lane(__builtin_ctz(rest));
+    return intersect_object_packet(object, as_rays.data(), hits, lanes);  // its own tree
 }
 
 unsigned Scene::intersect_packet(const Ray* rays, Hit* hits, unsigned active) const {

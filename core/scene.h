@@ -174,6 +174,8 @@ class Scene {
     unsigned analytic_lanes(std::uint32_t object, const RayLanes<kPacketWidth>& world,
                             unsigned lanes, ClosestLanes& best) const;
     unsigned intersect_unbounded_packet(const Ray* rays, Hit* hits, unsigned active) const;
+    unsigned mesh_among(std::uint32_t object, const RayLanes<kPacketWidth>& rays, Hit* hits,
+                        unsigned lanes) const;
     unsigned intersect_object_packet(std::uint32_t object, const Ray* rays, Hit* hits,
                                      unsigned lanes) const;
 

@@ -454,7 +454,7 @@ mutant whole-packet-barycentrics-swapped core/scene.cpp \
     'hits[lane].b1 = on ? out.b1[lane] : 0.0f;' 'hits[lane].b1 = on ? out.b2[lane] : 0.0f;' \
     rt_tests $(unit 'ItemBuffer.*:ScenePackets.*')
 mutant objects-around-half-the-lanes core/item_buffer_step.cpp \
-    'return least(v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));' 'return v;' \
+    'return op(v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));' 'return v;' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant tile-rays-off-centre core/tile_rays.h \
     'camera.across(static_cast<float>(x) + 0.5f)' 'camera.across(static_cast<float>(x) + 0.49f)' \
@@ -712,6 +712,12 @@ mutant objects-around-drop-the-right-neighbours core/item_buffer_step.cpp \
     'ids[2 * d + 1] = (ib.object_ids(at + kPacketWidth) & in_span[1]) - 1u;' \
     'ids[2 * d + 1] = (ib.object_ids(at + kPacketWidth) & Ids{}) - 1u;' \
     rt_tests $(unit 'ItemBuffer.*')
+mutant objects-around-two-where-there-are-more core/item_buffer_step.cpp \
+    'if (bits(others != Ids{}) == 0) {' 'if (true) {' \
+    rt_tests $(unit 'ItemBuffer.*')
+mutant objects-around-one-where-there-are-two core/item_buffer_step.cpp \
+    'if (hi == lo) return 1;' 'return 1;' \
+    rt_tests $(unit 'ItemBuffer.*')
 mutant objects-around-first-found-not-cleared core/item_buffer_step.cpp \
     'for (Ids& v : ids) v |= Ids(v == m);  // m is the least in every lane' \
     'for (Ids& v : ids) v |= Ids(v == m) & Ids{};' \
@@ -764,10 +770,10 @@ mutant among-barycentrics-swapped core/shape_packets.h \
     'b1 = select_bits(hit, out.b1, b1);' 'b1 = select_bits(hit, out.b2, b1);' \
     rt_tests $(unit 'ScenePackets.*')
 mutant among-mesh-before-the-shapes-written core/scene.cpp \
-    'if (best) best->write(hits), best.reset();' 'if (best) best.reset();' \
+    'if (open) best.write(hits), open = false;' 'if (open) open = false;' \
     rt_tests $(unit 'ScenePackets.*')
 mutant among-shapes-after-a-mesh-keep-old-bounds core/scene.cpp \
-    'if (best) best->write(hits), best.reset();' 'if (best) best->write(hits);' \
+    'if (open) best.write(hits), open = false;' 'if (open) best.write(hits);' \
     rt_tests $(unit 'ScenePackets.*')
 mutant among-mesh-rays-of-the-first-lane core/scene.cpp \
     'as_rays[__builtin_ctz(rest)] = rays.lane(__builtin_ctz(rest));' \
@@ -846,7 +852,7 @@ mutant small-objects-pixels-still-trusted core/item_buffer_step.cpp \
     'own_ids(scene, ib, at, n, lanes, hits, interior, !whole, left);' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant small-objects-not-tested core/item_buffer_step.cpp \
-    'scene.intersect_among(tiny.objects.data(), tiny.count, lanes, hits, open);' '' \
+    'if (tiny.count > 0) scene.intersect_among(tiny.objects.data(), tiny.count, lanes, hits, open);' '' \
     rt_tests $(unit 'ItemBuffer.*')
 mutant inside-run-under-a-small-object core/item_buffer_step.cpp \
     'if (interior == kAll && n == kPacketWidth && tiny.lanes == 0) {' \
