@@ -1,7 +1,8 @@
 #pragma once
-// The item buffer's primary step (Weghorst, Hooper & Greenberg 1984): a tile's first hits
-// from the ids the raster drew, each pixel tested against the object it names, and a
-// pixel on an edge against the objects named around it (core/renderer.cpp's primary pass).
+// The renderer's primary step, a tile's first hits (core/renderer.cpp): from the item
+// buffer (Weghorst, Hooper & Greenberg 1984), the ids the raster drew, each pixel tested
+// against the object it names and a pixel on an edge against the objects named around
+// it; or without it, the camera rays in packets through the scene.
 
 #include <cstdint>
 #include <vector>
@@ -22,5 +23,10 @@ namespace rt::detail {
 // or missed what they named.
 std::uint64_t item_buffer_hits(const Scene& scene, const ItemBuffer& ib, const SmallObjects& small,
                                const Tile& t, const TileRays& rays, std::vector<Hit>& hits);
+
+// The same tile's first hits without the item buffer: its camera rays through the scene
+// kPacketWidth at a time (Scene::intersect_packet), made first into `tile`.
+void primary_packets(const Scene& scene, const TileRays& rays, std::vector<Ray>& tile,
+                     std::vector<Hit>& hits);
 
 }  // namespace rt::detail

@@ -1,12 +1,15 @@
 // rtbench --item-buffer SCENE: a full Whitted frame with and without the item buffer.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <vector>
 
 #include "app/bench/modes.h"
 #include "app/gl/context.h"
 #include "app/gl/raster_renderer.h"
 #include "core/error.h"
+#include "core/item_buffer_step.h"
 #include "core/renderer.h"
 #include "core/scene_loader.h"
 #include "core/stopwatch.h"
@@ -17,15 +20,43 @@ namespace {
 
 // Per frame: a trace without the item buffer, one with it from its own pass, and (where
 // the raster can share its pass) a plain raster frame and one that draws the ids too.
-constexpr int kRasterPairs = 3;  // raster frames with and without the ids, per round
+constexpr int kRasterPairs = 3;   // raster frames with and without the ids, per round
+constexpr int kAlonePasses = 15;  // of the primary step alone (primary_step_alone), each way
 
 struct Samples {
     std::vector<double> plain_frame, plain_primary, ib_pass, ib_primary, ib_frame, trace_with,
-        raster_plain, raster_shared, ids_cost;
+        raster_plain, raster_shared, ids_cost, alone_packets, alone_step;
     rt::Image with, without;
     rt::RenderStats stats;  // the last trace with the item buffer
     bool can_share = false;
 };
+
+// The primary step alone: one pass over the frame's tiles on this thread, as the renderer
+// makes them, with the item buffer (`ib`) or without it (null); no shading in between, and
+// no second thread on the core. Returns the seconds.
+double primary_step_alone(const rt::Scene& scene, const rt::ItemBuffer* ib,
+                          const rt::SmallObjects& small) {
+    const rt::Camera& camera = scene.camera;
+    const int size = rt::RenderOptions{}.tile_size;
+    const rt::detail::CameraTerms terms(camera);
+    rt::detail::TileRays rays;
+    std::vector<rt::Hit> hits;
+    std::vector<rt::Ray> tile_rays;
+    rt::Stopwatch watch;
+    for (int y = 0; y < camera.rows; y += size) {
+        for (int x = 0; x < camera.cols; x += size) {
+            const rt::detail::Tile t{x, y, std::min(x + size, camera.cols),
+                                     std::min(y + size, camera.rows)};
+            hits.resize(static_cast<std::size_t>(t.x1 - t.x0) * (t.y1 - t.y0));
+            rays.make(terms, t, 0, 1);
+            if (ib)
+                rt::detail::item_buffer_hits(scene, *ib, small, t, rays, hits);
+            else
+                rt::detail::primary_packets(scene, rays, tile_rays, hits);
+        }
+    }
+    return watch.seconds();
+}
 
 Samples measure(const ItemBufferBenchOptions& o, const rt::Scene& scene,
                 rt::gl::RasterRenderer& raster) {
@@ -85,6 +116,14 @@ Samples measure(const ItemBufferBenchOptions& o, const rt::Scene& scene,
                             "the raster pass's item buffer differs from the dedicated pass's");
         if (k > 0) m.trace_with.push_back(m.stats.seconds);
     }
+    // The primary step alone on one thread, in turns with and without (after the frames,
+    // whose second thread has stopped).
+    const rt::SmallObjects small(scene, scene.camera);
+    for (int k = 0; k < kAlonePasses + 1; ++k) {  // the first pass a warm-up
+        const double packets = primary_step_alone(scene, nullptr, small);
+        const double step = primary_step_alone(scene, &ib, small);
+        if (k > 0) m.alone_packets.push_back(packets), m.alone_step.push_back(step);
+    }
     return m;
 }
 
@@ -125,6 +164,11 @@ int report(const ItemBufferBenchOptions& o, const std::string& gl, const Samples
     std::printf("primary rays: %.2fx faster; %llu on edges, %llu of %zu pixels differ\n",
                 primary0 / primary1, static_cast<unsigned long long>(fell_back),
                 static_cast<unsigned long long>(differing), m.with.pixels.size());
+    const double alone0 = median(m.alone_packets), alone1 = median(m.alone_step);
+    std::printf(
+        "the primary step alone, one thread (medians of %d passes over the frame's tiles): "
+        "packets %.2f ms, item buffer %.2f ms (%.2fx faster)\n",
+        kAlonePasses, 1e3 * alone0, 1e3 * alone1, alone0 / alone1);
     if (!o.json.empty()) {
         nlohmann::json j = {{"scene", o.scene},
                             {"width", o.width},
@@ -139,6 +183,8 @@ int report(const ItemBufferBenchOptions& o, const std::string& gl, const Samples
                             {"raster_pass_seconds", pass},
                             {"net_speedup", frame0 / frame1},
                             {"fallback_pixels", fell_back},
+                            {"primary_step_alone_seconds_without", alone0},
+                            {"primary_step_alone_seconds_with", alone1},
                             {"differing_pixels", differing}};
         if (m.can_share) {
             j["shared_pass_seconds"] = shared;

@@ -51,6 +51,8 @@ fi
 "$rtbench" --item-buffer "$assets/scenes/tutorial.json" --size 160x120 --repeats 1 >"$out/ib.log" 2>&1
 check "item-buffer demo runs (exit 0: images agree)" test $? -eq 0
 check "  ... and reports the net effect" grep -q "net on the frame" "$out/ib.log"
+check "  ... and the primary step alone, with and without" \
+  grep -Eq "the primary step alone.*packets [0-9.]+ ms, item buffer [0-9.]+ ms" "$out/ib.log"
 
 "$rtbench" "$out/none.obj" >"$out/bad.log" 2>&1
 check "a missing file: exit 1, one line" test $? -eq 1 -a "$(wc -l <"$out/bad.log")" -eq 1
