@@ -8,6 +8,9 @@ real model the shipped ones do not cover:
                rays grazing it
   bunny4.obj   277,804 triangles: the Stanford bunny with each triangle split in four at
                its edges' midpoints (a scan at four times the resolution)
+  city.obj     122,402 triangles: 3,000 boxes and 150 spheres on a ground of two triangles
+               120 units wide: an architectural or city model, triangles of every size,
+               hits up to 85 units from the origin
 
 Usage: scripts/make_bench_meshes.py OUT_DIR [BUNNY_OBJ]
 The same files on every run (a fixed seed)."""
@@ -58,6 +61,41 @@ def terrain(n=220, seed=1):
     return vertices, faces
 
 
+def city(seed=7):
+    rng = random.Random(seed)
+    vertices, faces = [], []
+
+    def box(x0, y0, z0, x1, y1, z1):
+        b = len(vertices)
+        vertices.extend((x, y, z) for x in (x0, x1) for y in (y0, y1) for z in (z0, z1))
+        for a, c, d, e in [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4),
+                           (1, 5, 7, 3)]:
+            faces.extend([(b + a, b + c, b + d), (b + a, b + d, b + e)])
+
+    def sphere(cx, cy, cz, r, n=12):
+        b = len(vertices)
+        for j in range(n + 1):
+            theta = math.pi * j / n
+            for i in range(2 * n):
+                phi = math.pi * i / n
+                vertices.append((cx + r * math.sin(theta) * math.cos(phi), cy + r * math.cos(theta),
+                                 cz + r * math.sin(theta) * math.sin(phi)))
+        for j in range(n):
+            for i in range(2 * n):
+                a, c = b + j * 2 * n + i, b + j * 2 * n + (i + 1) % (2 * n)
+                faces.extend([(a, c, c + 2 * n), (a, c + 2 * n, a + 2 * n)])
+
+    vertices.extend([(-60, 0, -60), (60, 0, -60), (60, 0, 60), (-60, 0, 60)])
+    faces.extend([(0, 1, 2), (0, 2, 3)])
+    for _ in range(3000):
+        x, z = rng.uniform(-50, 50), rng.uniform(-50, 50)
+        w, d, h = rng.uniform(0.5, 3), rng.uniform(0.5, 3), rng.expovariate(1 / 4) + 0.5
+        box(x, 0, z, x + w, h, z + d)
+    for _ in range(150):
+        sphere(rng.uniform(-50, 50), rng.uniform(0.2, 1), rng.uniform(-50, 50), rng.uniform(0.1, 0.6))
+    return vertices, faces
+
+
 def subdivided(path):
     vertices, faces = [], []
     with open(path) as f:
@@ -94,6 +132,7 @@ def main():
     write_obj(os.path.join(out, "vase.obj"), *vase())
     write_obj(os.path.join(out, "terrain.obj"), *terrain())
     write_obj(os.path.join(out, "bunny4.obj"), *subdivided(bunny))
+    write_obj(os.path.join(out, "city.obj"), *city())
 
 
 if __name__ == "__main__":

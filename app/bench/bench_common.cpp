@@ -46,6 +46,25 @@ vec3 cosine_direction(const vec3& n, std::uint32_t index) {
            std::sqrt(std::max(0.0f, 1.0f - u1)) * n;
 }
 
+// p (a ray's hit on triangle `prim`, r.at(t)) moved onto the triangle's plane, as a
+// renderer finds its hit points (from the barycentrics: Triangle::surface; a plane's
+// projected back: Plane::surface), to the precision of floats. r.at(t) itself is off the
+// plane by t's rounding times the ray's length: on a ground 120 units wide seen from 100
+// away, 2e-5 below it, more than offset_ray_origin's step near zero (1.5e-5), so that
+// secondary rays started under the ground and met it from below at t = 1e-5 to 5e-5,
+// which our structures' test rejects as within its rounding (core/triangle4.h) and
+// Embree's does not: "WRONG" answers on a legal mesh (docs/BENCHMARKS.md).
+vec3 on_triangle(const rt::TriangleMesh& mesh, std::uint32_t prim, const vec3& p) {
+    const glm::uvec3& tri = mesh.triangles[prim];
+    const glm::dvec3 a(mesh.positions[tri[0]]), b(mesh.positions[tri[1]]),
+        c(mesh.positions[tri[2]]);
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    const double nn = glm::dot(n, n);
+    if (!(nn > 0.0)) return p;  // no plane (a hit on it is not possible either)
+    const glm::dvec3 q(p);
+    return vec3(q - (glm::dot(q - a, n) / nn) * n);
+}
+
 }  // namespace
 
 RaySet primary_rays(const rt::Camera& camera) {
@@ -74,7 +93,7 @@ std::vector<RaySet> make_ray_sets(const rt::Camera& camera, const rt::TriangleMe
         const rt::Ray& r = sets[0].rays[i];
         vec3 n = glm::normalize(mesh.face_normal(h.prim));
         if (glm::dot(n, r.dir) > 0.0f) n = -n;
-        points.push_back(rt::offset_ray_origin(r.at(h.t), n));
+        points.push_back(rt::offset_ray_origin(on_triangle(mesh, h.prim, r.at(h.t)), n));
         sets[2].rays.push_back({points.back(), cosine_direction(n, static_cast<std::uint32_t>(i))});
         sets[2].t_max.push_back(rt::kInfinity);
         sets[3].rays.push_back({points.back(), glm::reflect(r.dir, n)});

@@ -13,6 +13,7 @@ struct ExactAnswer {
     bool hit = false;
     double t = 0.0;
     bool ambiguous = false;  // within rounding of an edge, a vertex, t_max, or a second hit
+    double slack = 0.0;      // how far a float test's t may be from t and still be right
 };
 
 class ExactTracer {

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes the PLY and STL test files (tests/data/mesh, and the bad ones in tests/data/bad):
 one coloured octahedron as ASCII and binary PLY (with per-vertex colours and normals) and
-as ASCII and binary STL. The files are committed; this says how they were made."""
-import os, struct
+as ASCII and binary STL; and town.obj, rtbench's check of a ground 120 units wide with
+boxes on it (tests/cli/rtbench.sh). The files are committed; this says how they were made."""
+import os, random, struct
 
 here = os.path.dirname(os.path.abspath(__file__))
 bad = os.path.join(here, "..", "bad")
@@ -64,3 +65,35 @@ with open(os.path.join(here, "octahedron_binary.stl"), "wb") as f:
     f.write(stl)
 with open(os.path.join(bad, "stl_truncated.stl"), "wb") as f:
     f.write(stl[:84] + stl[84:84 + 60])  # says 8 facets, holds one and a bit
+
+
+def town():
+    random.seed(3)
+    vertices, faces = [], []
+
+    def box(x0, y0, z0, x1, y1, z1):
+        b = len(vertices)
+        vertices.extend((x, y, z) for x in (x0, x1) for y in (y0, y1) for z in (z0, z1))
+        for a, c, d, e in [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4),
+                           (1, 5, 7, 3)]:
+            faces.extend([(b + a, b + c, b + d), (b + a, b + d, b + e)])
+
+    vertices.extend([(-60, 0, -60), (60, 0, -60), (60, 0, 60), (-60, 0, 60)])
+    faces.extend([(0, 1, 2), (0, 2, 3)])
+    for _ in range(40):
+        x, z = random.uniform(-50, 50), random.uniform(-50, 50)
+        w, d, h = random.uniform(1, 6), random.uniform(1, 6), random.uniform(1, 12)
+        box(x, 0, z, x + w, h, z + d)
+    with open(os.path.join(here, "town.obj"), "w") as f:
+        f.write("# rtbench's check (tests/cli/rtbench.sh): a ground 120 units wide and 40 boxes "
+                "standing on it,\n# the class of an architectural or city model. Rays leaving a "
+                "wall by the ground meet it\n# within float rounding of their start; rays leaving "
+                "the ground far from the origin need\n# their start on its plane "
+                "(app/bench/bench_common.cpp, on_triangle).\n")
+        for v in vertices:
+            f.write("v %g %g %g\n" % v)
+        for a, b, c in faces:
+            f.write("f %d %d %d\n" % (a + 1, b + 1, c + 1))
+
+
+town()
