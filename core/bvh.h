@@ -33,7 +33,7 @@ class Bvh {
     // enters: where the two halves' boxes have at least kKeepLeaf of the subtree's area
     // between them. On `threads` threads (0: all the hardware's); the tree is the same on
     // any number.
-    static constexpr float kKeepLeaf = 0.8f;
+    static constexpr float kKeepLeaf = 0.4f;
     void build(std::span<const Aabb> prim_boxes, std::uint32_t max_leaf = 2, int threads = 0,
                std::uint32_t split_above = 0);
 
