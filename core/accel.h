@@ -99,14 +99,12 @@ class Accel {
                                     hit_leaf);
     }
     // The same, the rays that make no packet handed to `alone(lanes)` (the caller's own
-    // single-ray code); all of them where the structure has no packets. kSplitOff: as
-    // WideBvh's.
-    template <bool kAnyHit, bool kSplitOff = false, class HitLeaf, class Alone>
+    // single-ray code); all of them where the structure has no packets.
+    template <bool kAnyHit, class HitLeaf, class Alone>
     void traverse_packet(const Ray* rays, float* t_max, unsigned active, HitLeaf&& hit_leaf,
                          Alone&& alone) const {
         if (const auto* wide = std::get_if<DefaultWideBvh>(&impl_))
-            return wide->traverse_packet<kAnyHit, kSplitOff>(rays, t_max, active, hit_leaf,
-                                                              alone);
+            return wide->traverse_packet<kAnyHit>(rays, t_max, active, hit_leaf, alone);
         alone(active & ((1u << kPacketWidth) - 1u));
     }
     // The leaves traverse_leaves() hands out, as `f(first_slot, count)`, in slot order.

@@ -62,7 +62,7 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
         t_max[__builtin_ctz(m)] = hits[__builtin_ctz(m)].t;
     PacketShear lazy_shear(rays, active);
     unsigned found = 0, alone = 0;  // hits in the packet's leaves, and of rays traced alone
-    accel_.traverse_packet<false, true>(
+    accel_.traverse_packet<false>(
         rays, t_max.data(), active,
         [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
             unsigned hit = 0;
@@ -119,7 +119,7 @@ unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsi
         limits[__builtin_ctz(m)] = t_max[__builtin_ctz(m)];
     PacketShear lazy_shear(rays, active);
     unsigned blocked = 0;
-    accel_.traverse_packet<true, true>(
+    accel_.traverse_packet<true>(
         rays, limits.data(), active,
         [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
             unsigned hit = 0;

@@ -61,10 +61,6 @@ class WideBvh {
     // ray enters within (0, t_max), nearest first unless kAnyHit.
     template <bool kAnyHit, class HitLeaf>
     bool traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const;
-    // The same from node `start` down (its subtree only; the root: traverse_leaves).
-    template <bool kAnyHit, class HitLeaf>
-    bool traverse_leaves_from(std::uint32_t start, const Ray& ray, float& t_max,
-                              HitLeaf&& hit_leaf) const;
     template <bool kAnyHit, class HitPrim>
     bool traverse(const Ray& ray, float& t_max, HitPrim&& hit) const;
     // Up to kPacketWidth rays together (core/wide_bvh_packet.h): rays[lane] for each bit
@@ -74,11 +70,8 @@ class WideBvh {
     // ray gets the answer traverse_leaves gives it alone (of two hits at the very same t,
     // either). Rays whose directions differ in sign on some axis share no useful bounds:
     // they go to `alone(lanes)`, the caller's own single-ray code, one at a time (without
-    // it, through traverse_leaves with hit_leaf). With kSplitOff, a subtree that at most
-    // detail::kSplitOffAtMost of the rays enter is walked by each alone (a mesh's rays:
-    // its leaf test is as quick for one ray; a scene's objects are tested across the
-    // rays' lanes, so its packets stay whole).
-    template <bool kAnyHit, bool kSplitOff = false, class HitLeaf, class Alone>
+    // it, through traverse_leaves with hit_leaf).
+    template <bool kAnyHit, class HitLeaf, class Alone>
     void traverse_packet(const Ray* rays, float* t_max, unsigned active, HitLeaf&& hit_leaf,
                          Alone&& alone) const;
     template <bool kAnyHit, class HitLeaf>
@@ -184,13 +177,6 @@ template <bool kAnyHit, class Pending, std::size_t K>
 template <int N>
 template <bool kAnyHit, class HitLeaf>
 bool WideBvh<N>::traverse_leaves(const Ray& ray, float& t_max, HitLeaf&& hit_leaf) const {
-    return traverse_leaves_from<kAnyHit>(0, ray, t_max, hit_leaf);
-}
-
-template <int N>
-template <bool kAnyHit, class HitLeaf>
-bool WideBvh<N>::traverse_leaves_from(std::uint32_t start, const Ray& ray, float& t_max,
-                                      HitLeaf&& hit_leaf) const {
     if (nodes_.empty() || !finite_ray(ray)) return false;
     const detail::BoxRay<N> box_ray(ray);
     if constexpr (kAnyHit) {
@@ -209,7 +195,7 @@ bool WideBvh<N>::traverse_leaves_from(std::uint32_t start, const Ray& ray, float
         } while (next.t_enter >= t_max);
         return true;
     };
-    Pending current{start, 0, 0.0f};
+    Pending current{0, 0, 0.0f};
     bool found = false;
     for (;;) {
         // Down the nearest child entered until a leaf; the others wait on the stack,

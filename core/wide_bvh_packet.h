@@ -18,7 +18,6 @@
 // tests need none of the packet's set-up), else WideBvh::traverse_leaves.
 
 #include <algorithm>
-#include <bit>
 #include <array>
 #include <cmath>
 
@@ -166,33 +165,6 @@ void one_by_one(const S& s, const Ray* rays, float* t_max, unsigned active, HitL
     }
 }
 
-// A packet's subtree that this many of its rays or fewer enter is walked by each of them
-// alone (split_off), as Embree's packets do (its "hybrid" traversal): where the rays part
-// ways (feelers from hits scattered through a tree's leaves), the interval test admits
-// children that each ray's own test then turns away, and a ray alone skips both. On a
-// soup of 100,000 small triangles (docs/BENCHMARKS.md, thirty-sixth session) the packets'
-// shadow rays took 1.29x Embree's packets' time, 1.14x with one ray split off, 1.065x with
-// two, 1.10x with four; the bunny's as before with two, slower with four.
-inline constexpr int kSplitOffAtMost = 2;
-
-// The rays of `lanes` through node `start`'s subtree one at a time (traverse_leaves_from),
-// with the packet's leaf test; returns those that hit.
-template <bool kAnyHit, class S, class HitLeaf>
-unsigned split_off(const S& s, std::uint32_t start, const Ray* rays, float* t_max, unsigned lanes,
-                   HitLeaf& hit_leaf) {
-    unsigned hits = 0;
-    for (; lanes != 0; lanes &= lanes - 1) {
-        const unsigned lane = __builtin_ctz(lanes);
-        if (s.template traverse_leaves_from<kAnyHit>(
-                start, rays[lane], t_max[lane],
-                [&](std::uint32_t first, std::uint32_t count, float&) {
-                    return hit_leaf(first, count, 1u << lane) != 0;
-                }))
-            hits |= 1u << lane;
-    }
-    return hits;
-}
-
 }  // namespace detail
 
 template <int N>
@@ -205,7 +177,7 @@ void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
 }
 
 template <int N>
-template <bool kAnyHit, bool kSplitOff, class HitLeaf, class Alone>
+template <bool kAnyHit, class HitLeaf, class Alone>
 void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
                                  HitLeaf&& hit_leaf, Alone&& alone) const {
     active &= (1u << detail::kRayLanes<N>)-1u;
@@ -230,21 +202,6 @@ void WideBvh<N>::traverse_packet(const Ray* rays, float* t_max, unsigned active,
         // Down the nearest child entered until a leaf, as a single ray goes (traverse_leaves).
         bool missed = false;
         while (current.count == 0) {
-            if constexpr (kSplitOff) {
-                if (!boxes.one_origin && std::popcount(current.rays) <= detail::kSplitOffAtMost) {
-                    const unsigned hits = detail::split_off<kAnyHit>(*this, current.child, rays,
-                                                                     t_max, current.rays, hit_leaf);
-                    if (hits != 0) {
-                        if constexpr (kAnyHit) {
-                            active &= ~hits;
-                            if (active == 0) return;
-                        }
-                        limits.update(t_max, active);
-                    }
-                    missed = true;  // nothing left here for the packet
-                    break;
-                }
-            }
             const Node& node = nodes_[current.child];
             typename Lanes<N>::Float t_enter;
             std::array<unsigned, N> entering;
