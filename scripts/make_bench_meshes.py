@@ -11,6 +11,10 @@ real model the shipped ones do not cover:
   city.obj     122,402 triangles: 3,000 boxes and 150 spheres on a ground of two triangles
                120 units wide: an architectural or city model, triangles of every size,
                hits up to 85 units from the origin
+  tree.obj     96,960 triangles: a trunk and 48,000 leaves (quads of two triangles, turned
+               every way) in 600 clusters in a crown: foliage, small triangles overlapping
+  soup.obj     100,000 triangles of at most 0.02 units at random in a unit cube: the worst
+               of overlap (a particle cloud), not a model
 
 Usage: scripts/make_bench_meshes.py OUT_DIR [BUNNY_OBJ]
 The same files on every run (a fixed seed)."""
@@ -96,6 +100,62 @@ def city(seed=7):
     return vertices, faces
 
 
+def unit_vector(rng):
+    while True:
+        p = [rng.uniform(-1, 1) for _ in range(3)]
+        n = math.sqrt(sum(x * x for x in p))
+        if 0 < n <= 1:
+            return [x / n for x in p]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def scaled(v, length):
+    n = math.sqrt(sum(x * x for x in v)) or 1.0
+    return [x / n * length for x in v]
+
+
+def tree(seed=5):
+    rng = random.Random(seed)
+    vertices, faces = [], []
+    around, rings = 24, 20
+    for j in range(rings + 1):
+        y, r = j / rings * 4, 0.3 * (1 - 0.5 * j / rings)
+        for i in range(around):
+            t = 2 * math.pi * i / around
+            vertices.append((r * math.cos(t), y, r * math.sin(t)))
+    for j in range(rings):
+        for i in range(around):
+            a, c = j * around + i, j * around + (i + 1) % around
+            faces += [(a, c, c + around), (a, c + around, a + around)]
+    for _ in range(600):
+        d, r = unit_vector(rng), rng.random() ** 0.5
+        cluster = [d[0] * 2.5 * r, 5 + d[1] * 1.8 * r, d[2] * 2.5 * r]
+        for _ in range(80):
+            c = [x + rng.gauss(0, 0.25) for x in cluster]
+            n = unit_vector(rng)
+            u = scaled(cross(n, unit_vector(rng)), 0.06)
+            v = scaled(cross(n, u), 0.03)
+            b = len(vertices)
+            for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+                vertices.append(tuple(c[k] + su * u[k] + sv * v[k] for k in range(3)))
+            faces += [(b, b + 1, b + 2), (b, b + 2, b + 3)]
+    return vertices, faces
+
+
+def soup(count=100000, seed=11):
+    rng = random.Random(seed)
+    vertices, faces = [], []
+    for i in range(count):
+        c = [rng.random() for _ in range(3)]
+        for _ in range(3):
+            vertices.append(tuple(x + rng.uniform(-0.01, 0.01) for x in c))
+        faces.append((3 * i, 3 * i + 1, 3 * i + 2))
+    return vertices, faces
+
+
 def subdivided(path):
     vertices, faces = [], []
     with open(path) as f:
@@ -133,6 +193,8 @@ def main():
     write_obj(os.path.join(out, "terrain.obj"), *terrain())
     write_obj(os.path.join(out, "bunny4.obj"), *subdivided(bunny))
     write_obj(os.path.join(out, "city.obj"), *city())
+    write_obj(os.path.join(out, "tree.obj"), *tree())
+    write_obj(os.path.join(out, "soup.obj"), *soup())
 
 
 if __name__ == "__main__":
