@@ -65,16 +65,22 @@ def terrain(n=220, seed=1):
     return vertices, faces
 
 
+def add_box(vertices, faces, x0, y0, z0, x1, y1, z1):
+    """An axis-aligned box from (x0, y0, z0) to (x1, y1, z1), twelve triangles (also
+    tests/data/mesh/make.py's town)."""
+    b = len(vertices)
+    vertices.extend((x, y, z) for x in (x0, x1) for y in (y0, y1) for z in (z0, z1))
+    for a, c, d, e in [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4),
+                       (1, 5, 7, 3)]:
+        faces.extend([(b + a, b + c, b + d), (b + a, b + d, b + e)])
+
+
 def city(seed=7):
     rng = random.Random(seed)
     vertices, faces = [], []
 
-    def box(x0, y0, z0, x1, y1, z1):
-        b = len(vertices)
-        vertices.extend((x, y, z) for x in (x0, x1) for y in (y0, y1) for z in (z0, z1))
-        for a, c, d, e in [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4),
-                           (1, 5, 7, 3)]:
-            faces.extend([(b + a, b + c, b + d), (b + a, b + d, b + e)])
+    def box(*corners):
+        add_box(vertices, faces, *corners)
 
     def sphere(cx, cy, cz, r, n=12):
         b = len(vertices)

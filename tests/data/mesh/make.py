@@ -3,7 +3,7 @@
 one coloured octahedron as ASCII and binary PLY (with per-vertex colours and normals) and
 as ASCII and binary STL; and town.obj, rtbench's check of a ground 120 units wide with
 boxes on it (tests/cli/rtbench.sh). The files are committed; this says how they were made."""
-import os, random, struct
+import os, random, struct, sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 bad = os.path.join(here, "..", "bad")
@@ -68,15 +68,14 @@ with open(os.path.join(bad, "stl_truncated.stl"), "wb") as f:
 
 
 def town():
+    sys.path.insert(0, os.path.join(here, "..", "..", "..", "scripts"))
+    from make_bench_meshes import add_box
+
     random.seed(3)
     vertices, faces = [], []
 
-    def box(x0, y0, z0, x1, y1, z1):
-        b = len(vertices)
-        vertices.extend((x, y, z) for x in (x0, x1) for y in (y0, y1) for z in (z0, z1))
-        for a, c, d, e in [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4),
-                           (1, 5, 7, 3)]:
-            faces.extend([(b + a, b + c, b + d), (b + a, b + d, b + e)])
+    def box(*corners):
+        add_box(vertices, faces, *corners)
 
     vertices.extend([(-60, 0, -60), (60, 0, -60), (60, 0, 60), (-60, 0, 60)])
     faces.extend([(0, 1, 2), (0, 2, 3)])
