@@ -556,6 +556,23 @@ mutant packet-skips-a-child core/wide_bvh_packet.h \
     'for (mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
     'for (mask &= mask - 1, mask &= mask - 1; mask != 0; mask &= mask - 1) {' \
     rt_tests $(unit 'EveryKind/PacketTest.*:ScenePackets.*')
+# A node that at most two rays reach is tested by each of them over all its children.
+mutant packet-few-rays-child-kept-for-one core/wide_bvh_packet.h \
+    'rays_in |= ((static_cast<int>(enters) & child_bit) != 0) & (1 << r);' \
+    'rays_in = ((static_cast<int>(enters) & child_bit) != 0) & (1 << r);' \
+    rt_tests $(unit 'EveryKind/PacketTest.*:PacketWalk.*')
+mutant packet-few-rays-limit-of-the-first core/wide_bvh_packet.h \
+    'const unsigned enters = boxes.ray_enters(n, r, limits.lanes[r], t);' \
+    'const unsigned enters = boxes.ray_enters(n, r, limits.lanes[__builtin_ctz(rays)], t);' \
+    rt_tests $(unit 'EveryKind/PacketTest.*:PacketWalk.*')
+mutant packet-few-rays-entry-of-the-last core/wide_bvh_packet.h \
+    't_enter = select_bits(enters, vmin(t_enter, t), t_enter);' \
+    't_enter = select_bits(enters, t, t_enter);' \
+    rt_tests $(unit 'PacketWalk.*')
+mutant packet-few-rays-origin-of-the-first core/wide_bvh_packet.h \
+    'return (n.bounds[index] - splat<Float>(origin[a][r])) * splat<Float>(inverse[a][r]);' \
+    'return (n.bounds[index] - splat<Float>(origin[a][0])) * splat<Float>(inverse[a][r]);' \
+    rt_tests $(unit 'EveryKind/PacketTest.*:PacketWalk.*')
 mutant corner-normals-search-merges-directions core/mesh.cpp \
     'if (dirs[d].unit == u) return d;' 'if (glm::dot(dirs[d].unit, u) > 0.5f) return d;' \
     rt_tests $(unit 'Obj.*')

@@ -17,6 +17,7 @@
 #include "core/transform.h"
 #include "core/triangle_packet.h"
 #include "core/vec3_lanes.h"
+#include "core/wide_bvh_packet.h"
 #include "test_util.h"
 
 namespace rt {
@@ -447,6 +448,77 @@ TEST(TrianglePacket, EachRayGetsWhatItsOwnTestGives) {
     EXPECT_GT(compared, 50000);
     EXPECT_GT(hits, compared / 50);
     EXPECT_EQ(self_hits, 0);
+}
+
+// A packet's walk drops a waiting child only where none of the rays that enter it can
+// still find something nearer there, also where the rays part ways and a node is tested
+// by each of the few that reach it (kFewRays): each ray ends with what it finds alone.
+// The primitives are overlapping boxes, each "hit" halfway through the ray's span in it,
+// so that which child waits behind which, and with which bound, decides the answers.
+TEST(PacketWalk, EveryRayFindsTheNearestAmongOverlappingBoxes) {
+    std::mt19937 rng(7);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 96; ++i) {
+        const vec3 centre = random_in(rng, 4.0f),
+                   half = 0.1f + 1.2f * glm::abs(random_in(rng, 1.0f));
+        boxes.push_back({centre - half, centre + half});
+    }
+    WideBvh<kBvhWidth> bvh;
+    bvh.build(boxes, 1);
+    const auto midway = [&](const Ray& r, std::uint32_t slot) {  // +inf: no hit
+        const Aabb& b = boxes[bvh.order()[slot]];
+        double enter = 0.0, leave = kInfinity;
+        for (int a = 0; a < 3; ++a) {
+            const double lo = (double{b.lo[a]} - r.origin[a]) / r.dir[a];
+            const double hi = (double{b.hi[a]} - r.origin[a]) / r.dir[a];
+            enter = std::max(enter, std::min(lo, hi));
+            leave = std::min(leave, std::max(lo, hi));
+        }
+        return enter < leave ? static_cast<float>(0.5 * (enter + leave)) : kInfinity;
+    };
+    int compared = 0, hits = 0;
+    for (int n = 0; n < 4000; ++n) {
+        // Rays from scattered points, their directions of one sign on each axis (as
+        // feelers towards a light): two of them (the few that test nodes each), or all.
+        std::array<Ray, kPacketWidth> rays;
+        const vec3 towards = vec3(0.2f) + glm::abs(random_in(rng, 1.0f));
+        for (Ray& r : rays)
+            r = {random_in(rng, 6.0f), towards + 0.3f * glm::abs(random_in(rng, 1.0f))};
+        unsigned active = (1u << kPacketWidth) - 1u;
+        if (n % 2 == 0) active = (1u << (rng() % kPacketWidth)) | (1u << (rng() % kPacketWidth));
+        std::array<float, kPacketWidth> t_max;
+        t_max.fill(kInfinity);
+        bvh.traverse_packet<false>(rays.data(), t_max.data(), active,
+                                   [&](std::uint32_t first, std::uint32_t count, unsigned lanes) {
+                                       unsigned found = 0;
+                                       for (; lanes != 0; lanes &= lanes - 1) {
+                                           const int r = __builtin_ctz(lanes);
+                                           for (std::uint32_t k = 0; k < count; ++k) {
+                                               const float t = midway(rays[r], first + k);
+                                               if (t < t_max[r]) t_max[r] = t, found |= 1u << r;
+                                           }
+                                       }
+                                       return found;
+                                   });
+        for (unsigned m = active; m != 0; m &= m - 1) {
+            const int r = __builtin_ctz(m);
+            float alone = kInfinity;
+            bvh.traverse_leaves<false>(rays[r], alone,
+                                       [&](std::uint32_t first, std::uint32_t count, float& limit) {
+                                           bool found = false;
+                                           for (std::uint32_t k = 0; k < count; ++k) {
+                                               const float t = midway(rays[r], first + k);
+                                               if (t < limit) limit = t, found = true;
+                                           }
+                                           return found;
+                                       });
+            ASSERT_EQ(t_max[r], alone) << "packet " << n << " ray " << r;
+            ++compared;
+            hits += alone < kInfinity;
+        }
+    }
+    EXPECT_GT(hits, compared / 4);
+    EXPECT_LT(hits, compared * 3 / 4);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryKind, PacketTest,
