@@ -15,6 +15,9 @@ real model the shipped ones do not cover:
                every way) in 600 clusters in a crown: foliage, small triangles overlapping
   soup.obj     100,000 triangles of at most 0.02 units at random in a unit cube: the worst
                of overlap (a particle cloud), not a model
+  hall.obj     about 100,000 triangles: a closed hall 30 units long with fluted columns,
+               arches, curtains and tables; hall.json looks at it from inside (every ray
+               hits, feelers start among the columns): an interior, as Sponza is
 
 Usage: scripts/make_bench_meshes.py OUT_DIR [BUNNY_OBJ]
 The same files on every run (a fixed seed)."""
@@ -162,6 +165,88 @@ def soup(count=100000, seed=11):
     return vertices, faces
 
 
+def add_grid(vertices, faces, corner, u, v, nu, nv, bulge=None):
+    """A patch from `corner` along u and v in nu x nv quads; bulge(s, t) -> offset vector."""
+    b = len(vertices)
+    for j in range(nv + 1):
+        for i in range(nu + 1):
+            s, t = i / nu, j / nv
+            d = bulge(s, t) if bulge else (0, 0, 0)
+            vertices.append(tuple(corner[k] + s * u[k] + t * v[k] + d[k] for k in range(3)))
+    for j in range(nv):
+        for i in range(nu):
+            a = b + j * (nu + 1) + i
+            faces.extend([(a, a + 1, a + nu + 2), (a, a + nu + 2, a + nu + 1)])
+
+
+def add_tube(vertices, faces, path, radius, around):
+    """A tube along the points of `path`, its radius radius(k, angle) at point k."""
+    b = len(vertices)
+    for k, p in enumerate(path):
+        q = path[min(k + 1, len(path) - 1)]
+        o = path[max(k - 1, 0)]
+        axis = scaled([q[i] - o[i] for i in range(3)], 1.0)
+        side = scaled(cross(axis, [0.0, 0.0, 1.0] if abs(axis[2]) < 0.9 else [1.0, 0.0, 0.0]), 1.0)
+        up = cross(side, axis)
+        for i in range(around):
+            a = 2 * math.pi * i / around
+            r = radius(k, a)
+            vertices.append(tuple(p[j] + r * (math.cos(a) * side[j] + math.sin(a) * up[j])
+                                  for j in range(3)))
+    for k in range(len(path) - 1):
+        for i in range(around):
+            a, c = b + k * around + i, b + k * around + (i + 1) % around
+            faces.extend([(a, c, c + around), (a, c + around, a + around)])
+
+
+def hall(seed=3):
+    rng = random.Random(seed)
+    vertices, faces = [], []
+    x0, x1, z0, z1, top = -15.0, 15.0, -8.0, 8.0, 10.0
+    add_grid(vertices, faces, (x0, 0, z0), (30, 0, 0), (0, 0, 16), 60, 32)  # floor
+    add_grid(vertices, faces, (x0, top, z0), (30, 0, 0), (0, 0, 16), 60, 32)  # ceiling
+    for z in (z0, z1):
+        add_grid(vertices, faces, (x0, 0, z), (30, 0, 0), (0, top, 0), 60, 20)
+    for x in (x0, x1):
+        add_grid(vertices, faces, (x, 0, z0), (0, 0, 16), (0, top, 0), 32, 20)
+    for z in (-4.0, 4.0):  # two rows of fluted columns, arches between them
+        xs = [-12.0 + 24.0 * i / 9 for i in range(10)]
+        for x in xs:
+            add_tube(vertices, faces, [(x, 7.0 * k / 30, z) for k in range(31)],
+                     lambda k, a: 0.5 + 0.03 * math.cos(16 * a), 48)
+            add_box(vertices, faces, x - 0.7, 7.0, z - 0.7, x + 0.7, 7.4, z + 0.7)
+        for xa, xb in zip(xs, xs[1:]):
+            mid, half = (xa + xb) / 2, (xb - xa) / 2
+            arc = [(mid - half * math.cos(math.pi * k / 24), 7.4 + 0.8 * half * math.sin(math.pi * k / 24), z)
+                   for k in range(25)]
+            add_tube(vertices, faces, arc, lambda k, a: 0.3, 12)
+    for z, sign in ((z0 + 0.3, 1), (z1 - 0.3, -1)):  # curtains along the long walls
+        add_grid(vertices, faces, (x0 + 1, 1.0, z), (28, 0, 0), (0, 8, 0), 80, 30,
+                 lambda s, t: (0, 0, sign * 0.25 * (1 + math.sin(2 * math.pi * 18 * s))))
+    for _ in range(30):  # tables with a ball on each
+        x, z = rng.uniform(-13, 13), rng.uniform(-2.5, 2.5)
+        add_box(vertices, faces, x - 0.8, 0.8, z - 0.5, x + 0.8, 0.9, z + 0.5)
+        for dx in (-0.7, 0.7):
+            for dz in (-0.4, 0.4):
+                add_box(vertices, faces, x + dx - 0.05, 0, z + dz - 0.05, x + dx + 0.05, 0.8, z + dz + 0.05)
+        r = rng.uniform(0.15, 0.35)
+        add_tube(vertices, faces, [(x, 0.9 + r - r * math.cos(math.pi * k / 12), z) for k in range(13)],
+                 lambda k, a, r=r: max(1e-3, r * math.sin(math.pi * k / 12)), 24)
+    return vertices, faces
+
+
+HALL_SCENE = """{
+  "camera": { "eye": [-13, 3, 0.5], "look_at": [10, 2.5, -0.5], "up": [0, 1, 0], "fov": 60 },
+  "resolution": [1280, 720],
+  "lights": [
+    { "type": "point", "position": [0, 9, 0], "color": 0.7 },
+    { "type": "point", "position": [-8, 8, 5], "color": 0.4 }
+  ],
+  "objects": [ { "name": "hall", "type": "mesh", "file": "hall.obj" } ]
+}
+"""
+
+
 def subdivided(path):
     vertices, faces = [], []
     with open(path) as f:
@@ -201,6 +286,9 @@ def main():
     write_obj(os.path.join(out, "city.obj"), *city())
     write_obj(os.path.join(out, "tree.obj"), *tree())
     write_obj(os.path.join(out, "soup.obj"), *soup())
+    write_obj(os.path.join(out, "hall.obj"), *hall())
+    with open(os.path.join(out, "hall.json"), "w") as f:
+        f.write(HALL_SCENE)
 
 
 if __name__ == "__main__":
