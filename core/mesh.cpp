@@ -159,7 +159,7 @@ bool TriangleMesh::occluded(const Ray& r, float t_max) const {
     LazySheared sheared(r);
     return accel_.traverse_leaves<true>(
         r, t_max, [&](std::uint32_t leaf, std::uint32_t count, float& t_limit) RT_FORCE_INLINE {
-            return leaf_hit(first_pack(leaf), count, sheared.get(), t_limit).lane >= 0;
+            return leaf_blocks(first_pack(leaf), count, sheared.get(), t_limit);
         });
 }
 

@@ -99,6 +99,17 @@ struct TriangleMesh {
         }
         return best;
     }
+    // Whether the ray hits any of the leaf's triangles within t_max (leaf_hit's lane >= 0).
+    [[gnu::always_inline]] bool leaf_blocks(std::uint32_t start, std::uint32_t count,
+                                            const ShearedRay& r, float t_max) const {
+#if defined(__AVX__)
+        if (count > kTriangle4Lanes && count <= 2 * kTriangle4Lanes)
+            return rt::occludes(packs_[start], packs_[start + 1], r, t_max);
+#endif
+        for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k)
+            if (rt::occludes(packs_[start + k], r, t_max)) return true;
+        return false;
+    }
 };
 
 // A mesh as one object of a scene sees it: the shape interface of core/shapes.h over a

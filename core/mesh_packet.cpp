@@ -136,7 +136,7 @@ unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsi
             } else {
                 for (; lanes != 0; lanes &= lanes - 1) {
                     const unsigned ray = __builtin_ctz(lanes);
-                    if (leaf_hit(start, count, shear.each[ray], limits[ray]).lane >= 0)
+                    if (leaf_blocks(start, count, shear.each[ray], limits[ray]))
                         hit |= 1u << ray;
                 }
             }

@@ -149,6 +149,16 @@ template <class V, class Rel>
     return best;
 }
 
+// Whether the ray hits any of the lanes' triangles within (0, t_max): the same test, no
+// nearest sought (a shadow feeler's question).
+template <class V, class Rel>
+[[gnu::always_inline]] inline bool any_in_lanes(const Rel& rel, const ShearedRay& r, float t_max,
+                                                unsigned lanes) {
+    const auto o = watertight_values<V>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
+    V t;
+    return watertight_hits(o, r.sz, splat<V>(std::fabs(r.sz)), splat<V>(t_max), lanes, t) != 0;
+}
+
 }  // namespace detail
 
 // `lanes`: the lanes that may hit (a bit each); the others are computed and ignored, so a
@@ -157,6 +167,11 @@ template <class V, class Rel>
                                                      float t_max, unsigned lanes = 0xfu) {
     const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
     return detail::closest_in_lanes<Float4>(rel, r, t_max, lanes);
+}
+
+[[gnu::always_inline]] inline bool occludes(const Triangle4& tri, const ShearedRay& r, float t_max) {
+    const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
+    return detail::any_in_lanes<Float4>(rel, r, t_max, 0xfu);
 }
 
 #if defined(__AVX__)
@@ -169,6 +184,13 @@ template <class V, class Rel>
         return Float8(_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis])) - r.origin[axis];
     };
     return detail::closest_in_lanes<Float8>(rel, r, t_max, 0xffu);
+}
+[[gnu::always_inline]] inline bool occludes(const Triangle4& a, const Triangle4& b,
+                                            const ShearedRay& r, float t_max) {
+    const auto rel = [&](int vertex, int axis) {
+        return Float8(_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis])) - r.origin[axis];
+    };
+    return detail::any_in_lanes<Float8>(rel, r, t_max, 0xffu);
 }
 #endif
 

@@ -573,6 +573,15 @@ mutant packet-few-rays-origin-of-the-first core/wide_bvh_packet.h \
     'return (n.bounds[index] - splat<Float>(origin[a][r])) * splat<Float>(inverse[a][r]);' \
     'return (n.bounds[index] - splat<Float>(origin[a][0])) * splat<Float>(inverse[a][r]);' \
     rt_tests $(unit 'EveryKind/PacketTest.*:PacketWalk.*')
+# A leaf's any-hit test for feelers (TriangleMesh::leaf_blocks).
+mutant leaf-blocks-first-pack-only core/mesh.h \
+    'return rt::occludes(packs_[start], packs_[start + 1], r, t_max);' \
+    'return rt::occludes(packs_[start], r, t_max);' \
+    rt_tests $(unit '*AccelTest.*')
+mutant leaf-blocks-lanes-misread core/triangle4.h \
+    'return detail::any_in_lanes<Float4>(rel, r, t_max, 0xfu);' \
+    'return detail::any_in_lanes<Float4>(rel, r, t_max, 0x7u);' \
+    rt_tests $(unit '*AccelTest.*')
 mutant corner-normals-search-merges-directions core/mesh.cpp \
     'if (dirs[d].unit == u) return d;' 'if (glm::dot(dirs[d].unit, u) > 0.5f) return d;' \
     rt_tests $(unit 'Obj.*')

@@ -73,6 +73,8 @@ TEST_P(AccelTest, MeshHitsMatchTheTutorialsTestOnEveryTriangle) {
             << "ray " << i;  // relative, and to the scene size 10
         EXPECT_FALSE(mesh.occluded(ray, best * 0.999f))
             << "nothing is closer than the closest hit, ray " << i;
+        EXPECT_TRUE(mesh.occluded(ray, hit.t * 1.0001f))
+            << "the closest hit blocks a feeler that reaches just past it, ray " << i;
     }
     EXPECT_GT(hits, 500);  // the test means something only if many rays hit
 }
