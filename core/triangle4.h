@@ -135,8 +135,8 @@ template <class V, class Rel>
                                                             float t_max, unsigned lanes) {
     const auto o = watertight_values<V>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
     V t;
-    unsigned candidates = watertight_hits(o, r.sz, splat<V>(std::fabs(r.sz)),
-                                          splat<V>(t_max), lanes, t);
+    unsigned candidates =
+        watertight_hits(o, r.sz, splat<V>(std::fabs(r.sz)), splat<V>(t_max), lanes, t);
     Triangle4Hit best;
     for (; candidates != 0; candidates &= candidates - 1) {
         const int lane = __builtin_ctz(candidates);
@@ -169,7 +169,8 @@ template <class V, class Rel>
     return detail::closest_in_lanes<Float4>(rel, r, t_max, lanes);
 }
 
-[[gnu::always_inline]] inline bool occludes(const Triangle4& tri, const ShearedRay& r, float t_max) {
+[[gnu::always_inline]] inline bool occludes(const Triangle4& tri, const ShearedRay& r,
+                                            float t_max) {
     const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
     return detail::any_in_lanes<Float4>(rel, r, t_max, 0xfu);
 }
