@@ -46,15 +46,27 @@ class LazySheared {
 }  // namespace
 
 void TriangleMesh::build(AccelKind kind, int threads) {
-    // The triangles' boxes on one thread: in parts on two, the first touch of a fresh
-    // array faults its pages from both at once, which was slower here (a million
-    // triangles: 6.2-7.8 ms against 5.8 ms; docs/BENCHMARKS.md, eighth session).
+    threads = build_threads(threads);
+    TaskPool* const pool = threads > 1 ? &TaskPool::shared(threads) : nullptr;
+    // The triangles' boxes in parts. (On one thread until the thirty-eighth session: two
+    // threads touching a fresh array's small pages at once were slower, eighth session;
+    // a large array's pages are huge ones now, or kept from the last build.)
     LargeArray<Aabb> boxes(triangles.size());
+    const int box_parts = pool ? part_count(triangles.size(), threads, 16384) : 1;
+    std::vector<Aabb> part_bounds(static_cast<std::size_t>(box_parts));
+    parallel_parts(pool, 0, triangles.size(), box_parts,
+                   [&](int part, std::size_t begin, std::size_t end) {
+                       Aabb all;
+                       for (std::size_t i = begin; i < end; ++i) {
+                           Aabb box;
+                           for (int k = 0; k < 3; ++k) box.grow(positions[triangles[i][k]]);
+                           boxes[i] = box;
+                           all.grow(box);
+                       }
+                       part_bounds[part] = all;
+                   });
     bounds_ = Aabb{};
-    for (std::size_t i = 0; i < triangles.size(); ++i) {
-        for (int k = 0; k < 3; ++k) boxes[i].grow(positions[triangles[i][k]]);
-        bounds_.grow(boxes[i]);
-    }
+    for (const Aabb& b : part_bounds) bounds_.grow(b);
     accel_.build(boxes, kind, kind == AccelKind::kBvh ? kWideLeaf : kTriangle4Lanes, threads,
                  kTriangle4Lanes);
     // Each leaf's first pack (a pass over the leaves), then the packs filled in parallel.
@@ -95,8 +107,6 @@ void TriangleMesh::build(AccelKind kind, int threads) {
             }
         }
     };
-    threads = build_threads(threads);
-    TaskPool* const pool = threads > 1 ? &TaskPool::shared(threads) : nullptr;
     prim_lane_.clear();  // every triangle is in one leaf: each entry written by fill
     prim_lane_.resize(triangles.size());
     parallel_parts(pool, 0, leaves.size(), pool ? part_count(leaves.size(), threads, 4096) : 1,

@@ -1,6 +1,7 @@
 #include "core/wide_bvh.h"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 #include "core/large_array.h"
@@ -140,32 +141,39 @@ class Collapser {
             split_[i].fill(1);
             return;
         }
-        const std::array<float, N>& left = cost_[i + 1];
-        const std::array<float, N>& right = cost_[n.first];
         // Both children within j lanes: the cheapest split, k lanes to the left (k = 1
         // where none is cheaper, as when a box beyond float's range has no finite area).
-        std::array<float, N + 1> both{};
-        std::array<std::uint8_t, N + 1> k_best{};
-        for (int j = 2; j <= N; ++j) {
-            float best = left[0] + right[j - 2];
-            int k_at = 1;
-            for (int k = 2; k < j; ++k) {  // without branches: which k wins is random
-                const float c = left[k - 1] + right[j - k - 1];
-                const bool cheaper = c < best;
-                best = cheaper ? c : best;
-                k_at = cheaper ? k : k_at;
-            }
-            both[j] = best;
-            k_best[j] = static_cast<std::uint8_t>(k_at);
+        // All j at once, lane j - 1: for each k, the left's cost with k lanes plus the
+        // right's with j - k, read from the right's costs shifted up by k lanes behind
+        // infinities (no split of j < k + 1 lanes gives the left k). In turn over k, a
+        // lane keeps the first least: the comparisons a loop over j and k made.
+        using Float = typename rt::Lanes<N>::Float;
+        using Mask = typename rt::Lanes<N>::Mask;
+        std::array<float, 2 * N> right;  // [N + m]: the right's cost with m + 1 lanes
+        std::fill_n(right.begin(), N, kInfinity);
+        std::copy(cost_[n.first].begin(), cost_[n.first].end(), right.begin() + N);
+        const std::array<float, N>& left = cost_[i + 1];
+        const auto right_with_left = [&](int k) {
+            Float shifted;
+            std::memcpy(&shifted, right.data() + N - k, sizeof shifted);
+            return splat<Float>(left[k - 1]) + shifted;
+        };
+        Float both = right_with_left(1);
+        Mask k_best = Mask{} + 1;
+        for (int k = 2; k < N; ++k) {
+            const Float c = right_with_left(k);
+            const Mask cheaper = c < both;
+            both = cheaper ? c : both;
+            k_best = cheaper ? Mask{} + k : k_best;
         }
         // One lane: a wide node of its own, its children in its N lanes. More lanes:
         // the children's, where that costs less than fewer lanes.
-        cost_[i][0] = Aabb{n.lo, n.hi}.half_area() + both[N];
-        split_[i][0] = k_best[N];
+        cost_[i][0] = Aabb{n.lo, n.hi}.half_area() + both[N - 1];
+        split_[i][0] = static_cast<std::uint8_t>(k_best[N - 1]);
         for (int j = 2; j <= N; ++j) {
-            const bool fewer = !(both[j] < cost_[i][j - 2]);
-            cost_[i][j - 1] = fewer ? cost_[i][j - 2] : both[j];
-            split_[i][j - 1] = fewer ? kFewer : k_best[j];
+            const bool fewer = !(both[j - 1] < cost_[i][j - 2]);
+            cost_[i][j - 1] = fewer ? cost_[i][j - 2] : both[j - 1];
+            split_[i][j - 1] = fewer ? kFewer : static_cast<std::uint8_t>(k_best[j - 1]);
         }
     }
 

@@ -307,11 +307,20 @@ if grep -q '^RTVIEW_HOST_AMD_AVX512:INTERNAL=1' "$build/CMakeCache.txt"; then
         rt_tests $(unit 'Simd.*')
 fi
 mutant collapse-splits-one-lane-to-the-left core/wide_bvh.cpp \
-    'for (int k = 2; k < j; ++k) {' 'for (int k = 2; k < 2; ++k) {' \
+    'for (int k = 2; k < N; ++k) {' 'for (int k = 2; k < 2; ++k) {' \
     rt_tests $(unit '*WideBvh*:*Accel*')
 mutant collapse-never-spreads-a-subtree core/wide_bvh.cpp \
-    'const bool fewer = !(both[j] < cost_[i][j - 2]);' 'const bool fewer = true;' \
+    'const bool fewer = !(both[j - 1] < cost_[i][j - 2]);' 'const bool fewer = true;' \
     rt_tests $(unit '*WideBvh*:*Accel*')
+mutant collapse-right-costs-read-a-lane-off core/wide_bvh.cpp \
+    'right.data() + N - k,' 'right.data() + N - k + 1,' \
+    rt_tests $(unit '*WideBvh*')
+mutant collapse-split-named-a-lane-off core/wide_bvh.cpp \
+    'k_best = cheaper ? Mask{} + k : k_best;' 'k_best = cheaper ? Mask{} + (k - 1) : k_best;' \
+    rt_tests $(unit '*WideBvh*')
+mutant collapse-last-split-tried-left-out core/wide_bvh.cpp \
+    'for (int k = 2; k < N; ++k) {' 'for (int k = 2; k < N - 1; ++k) {' \
+    rt_tests $(unit '*WideBvh*')
 mutant collapse-gives-the-right-child-one-lane core/wide_bvh.cpp \
     'lanes_of(tree_[index].first, end, N - split_[index][0], l);' \
     'lanes_of(tree_[index].first, end, 1, l);' \
