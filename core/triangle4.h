@@ -125,7 +125,15 @@ template <class V, class S>
     t = t_scaled / o.det;
     const unsigned candidates = inside & lanes<kGt>(t, zero) & lanes<kLt>(t, limit);
     if (candidates == 0) return 0;
-    return candidates & lanes<kGt>(vabs(t_scaled), t_det_error(o, abs_sz));
+    // A triangle wholly in front of the origin is met at t > 0 wherever the ray meets it:
+    // t is its corners' distances along the ray (each az * sz, its sign exact: a rounded
+    // difference is 0 only where the two are equal), weighted by the barycentrics. Only
+    // a triangle that spans the origin's plane needs the bound, which is loose where the
+    // edge functions cancel (a sliver seen edge-on: |t * det| is tiny there whatever t
+    // is, and a fan of thousands met at its centre had holes).
+    const unsigned in_front =
+        lanes<kGt>(sz * o.az, zero) & lanes<kGt>(sz * o.bz, zero) & lanes<kGt>(sz * o.cz, zero);
+    return candidates & (in_front | lanes<kGt>(vabs(t_scaled), t_det_error(o, abs_sz)));
 }
 
 // The closest of the triangles in V's lanes (rel: a vertex's coordinate relative to the

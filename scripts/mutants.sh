@@ -312,6 +312,9 @@ mutant collapse-splits-one-lane-to-the-left core/wide_bvh.cpp \
 mutant collapse-never-spreads-a-subtree core/wide_bvh.cpp \
     'const bool fewer = !(both[j - 1] < cost_[i][j - 2]);' 'const bool fewer = true;' \
     rt_tests $(unit '*WideBvh*:*Accel*')
+mutant triangle-in-front-left-to-the-bound core/triangle4.h \
+    'return candidates & (in_front | lanes<kGt>' 'return candidates & (0u * in_front | lanes<kGt>' \
+    rt_tests $(unit 'Watertight.*')
 mutant collapse-right-costs-read-a-lane-off core/wide_bvh.cpp \
     'right.data() + N - k,' 'right.data() + N - k + 1,' \
     rt_tests $(unit '*WideBvh*')

@@ -61,18 +61,24 @@ bool check(const std::vector<Entry>& entries, const std::vector<RaySet>& sets,
                 const Mismatches m = compare(sets[s], e.answers[s], e.timing[s].stride,
                                              ref.answers[s], ref.timing[s].stride, exact);
                 report["checks"][name][label] = to_json(m);
+                // "of the N arbitrated" where not every disagreement was.
+                char sample[96] = "";
+                if (m.arbitrated < m.disagreements)
+                    std::snprintf(sample, sizeof sample,
+                                  " (of %zu of its %zu disagreements, spread evenly)", m.arbitrated,
+                                  m.disagreements);
                 if (m.ambiguous + m.reference_wrong > 0)
                     std::printf(
                         "%s against %s: %zu rays graze an edge (either answer is right), %s is "
-                        "wrong on %zu (exact double-precision test)\n",
-                        name.c_str(), label, m.ambiguous, label, m.reference_wrong);
+                        "wrong on %zu (exact double-precision test)%s\n",
+                        name.c_str(), label, m.ambiguous, label, m.reference_wrong, sample);
                 if (!m.ok()) {
                     ok = false;
                     std::printf(
-                        "WRONG: %s differs from %s on %zu of %zu rays (%zu hit/miss, %zu other "
-                        "hit)\n",
+                        "WRONG: %s is wrong where it differs from %s on %zu of %zu rays (%zu "
+                        "hit/miss, %zu other hit)%s\n",
                         name.c_str(), label, m.hit_miss + m.wrong_hit, m.checked, m.hit_miss,
-                        m.wrong_hit);
+                        m.wrong_hit, sample);
                 }
             };
             if (brute) against(*brute, "brute");

@@ -86,9 +86,9 @@ SetTiming time_set(const Structure& s, const RaySet& set, std::size_t stride,
 Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::size_t stride,
                    const std::vector<Result>& reference, std::size_t ref_stride,
                    const ExactTracer& exact) {
-    constexpr std::size_t kMaxArbitrated = 2000;
     Mismatches m;
-    std::size_t arbitrated = 0;
+    std::vector<std::size_t> differing;  // rays, each with the index of its answer
+    std::vector<std::size_t> answer_of;
     for (std::size_t i = 0; i < answers.size(); ++i) {
         const std::size_t ray = i * stride;
         if (ray % ref_stride != 0) continue;
@@ -102,21 +102,25 @@ Mismatches compare(const RaySet& set, const std::vector<Result>& answers, std::s
             // Two triangles may meet the ray at one t (a shared edge): either is right.
             differ = !same_t || (a.prim != r.prim && std::fabs(a.t - r.t) > 1e-6f * r.t);
         }
-        if (!differ) continue;
-        if (arbitrated++ < kMaxArbitrated) {
-            const ExactAnswer e = exact.trace(set.rays[ray], set.t_max[ray], set.occlusion);
-            // Both within float's rounding of the exact hit: either is right.
-            if (e.ambiguous ||
-                (exact.agrees(e, a, set.occlusion) && exact.agrees(e, r, set.occlusion))) {
-                ++m.ambiguous;
-                continue;
-            }
-            if (exact.agrees(e, a, set.occlusion)) {
-                ++m.reference_wrong;
-                continue;
-            }
+        if (differ) differing.push_back(ray), answer_of.push_back(i);
+    }
+    m.disagreements = differing.size();
+    m.arbitrated = std::min(m.disagreements, Mismatches::kMaxArbitrated);
+    for (std::size_t k = 0; k < m.arbitrated; ++k) {
+        const std::size_t pick = k * m.disagreements / m.arbitrated;  // evenly spread
+        const std::size_t ray = differing[pick];
+        const Result& a = answers[answer_of[pick]];
+        const Result& r = reference[ray / ref_stride];
+        const ExactAnswer e = exact.trace(set.rays[ray], set.t_max[ray], set.occlusion);
+        // Both within float's rounding of the exact hit: either is right.
+        if (e.ambiguous ||
+            (exact.agrees(e, a, set.occlusion) && exact.agrees(e, r, set.occlusion))) {
+            ++m.ambiguous;
+        } else if (exact.agrees(e, a, set.occlusion)) {
+            ++m.reference_wrong;
+        } else {
+            ++(a.hit() != r.hit() ? m.hit_miss : m.wrong_hit);
         }
-        ++(a.hit() != r.hit() ? m.hit_miss : m.wrong_hit);
     }
     return m;
 }
@@ -130,6 +134,8 @@ nlohmann::json to_json(const SetTiming& t) {
 
 nlohmann::json to_json(const Mismatches& m) {
     return {{"checked", m.checked},
+            {"disagreements", m.disagreements},
+            {"arbitrated", m.arbitrated},
             {"hit_miss", m.hit_miss},
             {"wrong_hit", m.wrong_hit},
             {"ambiguous", m.ambiguous},

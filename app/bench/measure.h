@@ -22,8 +22,15 @@ struct SetTiming {
     std::size_t stride = 1;  // 1: every ray; k: every k-th (brute force)
 };
 
+// Where a structure and a reference answer rays differently. The exact test arbitrates
+// up to kMaxArbitrated of the disagreements, spread evenly over them where there are
+// more (a mesh on which Embree, whose test is not watertight, errs on a third of the
+// feelers: its thousand slivers meeting at a point); the counts below are of those, and
+// the verdict scales them up to all the disagreements.
 struct Mismatches {
+    static constexpr std::size_t kMaxArbitrated = 2000;
     std::size_t checked = 0;
+    std::size_t disagreements = 0, arbitrated = 0;
     // Disagreements the exact test (app/bench/exact.h) decided against the structure:
     std::size_t hit_miss = 0;   // one found a hit, the other did not
     std::size_t wrong_hit = 0;  // another primitive at another t
@@ -32,7 +39,15 @@ struct Mismatches {
     std::size_t ambiguous = 0;
     std::size_t reference_wrong = 0;
     std::size_t allowed() const { return std::max<std::size_t>(2, checked / 100000); }
-    bool ok() const { return hit_miss + wrong_hit <= allowed(); }
+    // The structure's wrong answers among all the disagreements: counted where all were
+    // arbitrated, else estimated from those that were.
+    double wrong() const {
+        const auto found = static_cast<double>(hit_miss + wrong_hit);
+        return arbitrated == disagreements
+                   ? found
+                   : found * static_cast<double>(disagreements) / static_cast<double>(arbitrated);
+    }
+    bool ok() const { return wrong() <= static_cast<double>(allowed()); }
 };
 
 // One pass of every ray of `set` (or every stride-th) through `s`, on `threads`: its
