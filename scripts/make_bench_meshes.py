@@ -18,6 +18,12 @@ real model the shipped ones do not cover:
   hall.obj     about 100,000 triangles: a closed hall 30 units long with fluted columns,
                arches, curtains and tables; hall.json looks at it from inside (every ray
                hits, feelers start among the columns): an interior, as Sponza is
+  fan.obj      60,000 slivers meeting at one vertex, a wavy disc: the cap of a finely
+               tessellated cylinder or a sphere's pole taken to the extreme
+  straws.obj   60,000 needles 3 units long and about 0.007 across, crossing at random in
+               a 4-unit cube: thin triangles at every angle (hay, hair, grass)
+  twist.obj    60,000 slivers 6 units long, each a side of a tube twisted by a quarter
+               turn: long triangles whose boxes all overlap
 
 Usage: scripts/make_bench_meshes.py OUT_DIR [BUNNY_OBJ]
 The same files on every run (a fixed seed)."""
@@ -165,6 +171,45 @@ def soup(count=100000, seed=11):
     return vertices, faces
 
 
+def fan(count=60000):
+    vertices, faces = [(0.0, 0.0, 0.0)], []
+    for i in range(count):
+        a = 2 * math.pi * i / count
+        vertices.append((4 * math.cos(a), 0.3 * math.sin(5 * a), 4 * math.sin(a)))
+        faces.append((0, 1 + i, 1 + (i + 1) % count))
+    return vertices, faces
+
+
+def straws(count=60000, seed=3):
+    rng = random.Random(seed)
+    vertices, faces = [], []
+    for _ in range(count):
+        c = [rng.uniform(-2, 2) for _ in range(3)]
+        d = [rng.gauss(0, 1) for _ in range(3)]
+        length = math.sqrt(sum(x * x for x in d))
+        d = [x / length * 1.5 for x in d]
+        w = [rng.gauss(0, 1) * 0.004 for _ in range(3)]
+        k = len(vertices)
+        vertices.append(tuple(c[q] - d[q] for q in range(3)))
+        vertices.append(tuple(c[q] + d[q] for q in range(3)))
+        vertices.append(tuple(c[q] + d[q] + w[q] for q in range(3)))
+        faces.append((k, k + 1, k + 2))
+    return vertices, faces
+
+
+def twist(count=30000):
+    vertices, faces = [], []
+    for i in range(count):
+        a = 2 * math.pi * i / count
+        vertices.append((math.cos(a), -3.0, math.sin(a)))
+        vertices.append((math.cos(a + math.pi / 2), 3.0, math.sin(a + math.pi / 2)))
+    for i in range(count):
+        j = (i + 1) % count
+        faces.append((2 * i, 2 * j, 2 * i + 1))
+        faces.append((2 * j, 2 * j + 1, 2 * i + 1))
+    return vertices, faces
+
+
 def add_grid(vertices, faces, corner, u, v, nu, nv, bulge=None):
     """A patch from `corner` along u and v in nu x nv quads; bulge(s, t) -> offset vector."""
     b = len(vertices)
@@ -287,6 +332,9 @@ def main():
     write_obj(os.path.join(out, "tree.obj"), *tree())
     write_obj(os.path.join(out, "soup.obj"), *soup())
     write_obj(os.path.join(out, "hall.obj"), *hall())
+    write_obj(os.path.join(out, "fan.obj"), *fan())
+    write_obj(os.path.join(out, "straws.obj"), *straws())
+    write_obj(os.path.join(out, "twist.obj"), *twist())
     with open(os.path.join(out, "hall.json"), "w") as f:
         f.write(HALL_SCENE)
 
