@@ -136,8 +136,7 @@ unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsi
             } else {
                 for (; lanes != 0; lanes &= lanes - 1) {
                     const unsigned ray = __builtin_ctz(lanes);
-                    if (leaf_blocks(start, count, shear.each[ray], limits[ray]))
-                        hit |= 1u << ray;
+                    if (leaf_blocks(start, count, shear.each[ray], limits[ray])) hit |= 1u << ray;
                 }
             }
             blocked |= hit;
@@ -219,9 +218,10 @@ unsigned TriangleMesh::intersect_triangles_packet(const std::uint32_t* prims,
     for (int vertex = 0; vertex < 3; ++vertex)
         transpose_rows<kPacketWidth, 3>(corners[vertex].data(), v[vertex]);
     const Float limit = t_bounds<kPacketWidth>(hits, lanes);
-    const auto rel = [&](int vertex, int axis) { return v[vertex][axis] - together.origin[axis]; };
+    const auto corner = [&](int vertex, int axis) { return v[vertex][axis]; };
     Float t, b1, b2;
-    const unsigned found = detail::watertight_lanes<true>(rel, together, limit, lanes, t, b1, b2);
+    const unsigned found =
+        detail::watertight_lanes<true>(corner, together, limit, lanes, t, b1, b2);
     for (unsigned m = found; m != 0; m &= m - 1) {
         const unsigned ray = __builtin_ctz(m);
         hits[ray].t = t[ray];

@@ -7,6 +7,7 @@
 // values that must share a sign, divided by their sum for the barycentrics) done in the
 // ray's own frame, four triangles a time (core/simd.h), or eight (two packs) under AVX.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -106,14 +107,84 @@ template <class V>
     return 3.0f * (gamma(3) * e_max * z_max + delta_e * z_max + gamma(3) * z_max * e_max);
 }
 
+inline float lane_of(float x, int) { return x; }
+template <class V>
+inline float lane_of(const V& x, int lane) {
+    return x[lane];
+}
+
+// Of the lanes in `doubt` (the ray meets each one's triangle, at a t > 0 within the edge
+// form's bound on its rounding), those whose plane certainly lies ahead of the ray's
+// origin along it, before `limit`, with their t: in double precision, the plane's normal n from the
+// corners relative to the origin (axes permuted as the shear's), the origin's side n . A and the
+// direction's n . (sx, sy, 1), each beyond a bound on its rounding (forward error
+// analysis; sx and sy were rounded to floats; the bounds doubled for their own rounding).
+// The edge form's bound (t_det_error) is loose on a sliver that spans the origin's plane:
+// there |t * det| is as small as det (a sliver of a twisted tube 0.2 units ahead was
+// dropped), while here n is as long as the sliver is. The rare path: a lane at a time.
+template <class V>
+struct PlaneHits {
+    unsigned lanes = 0;
+    V t;  // in `lanes`
+};
+
+template <class V, class Corner, class R>
+[[gnu::noinline, gnu::cold]] PlaneHits<V> plane_hits(const Corner& corner, const R& r,
+                                                     const V& limit, unsigned doubt) {
+    const auto gamma = [](double n) { return n * 0x1p-53 / (1.0 - n * 0x1p-53); };
+    const int axis[3] = {r.kx, r.ky, r.kz};
+    V c[3][3];
+    for (int vertex = 0; vertex < 3; ++vertex)
+        for (int a = 0; a < 3; ++a) c[vertex][a] = corner(vertex, axis[a]);
+    PlaneHits<V> ahead;
+    for (unsigned rest = doubt; rest != 0; rest &= rest - 1) {
+        const int lane = __builtin_ctz(rest);
+        double p[3][3];  // the corners relative to the origin, each rounded at most once
+        double m = 0.0;
+        for (int vertex = 0; vertex < 3; ++vertex)
+            for (int a = 0; a < 3; ++a) {
+                p[vertex][a] =
+                    double(c[vertex][a][lane]) - double(lane_of(r.origin[axis[a]], lane));
+                m = std::max(m, std::fabs(p[vertex][a]));
+            }
+        double e1[3], e2[3], e = 0.0;
+        for (int a = 0; a < 3; ++a) {
+            e1[a] = p[1][a] - p[0][a], e2[a] = p[2][a] - p[0][a];
+            e = std::max({e, std::fabs(e1[a]), std::fabs(e2[a])});
+        }
+        const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                             e1[0] * e2[1] - e1[1] * e2[0]};
+        const double n_max = std::max({std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2])});
+        const double sx = lane_of(r.sx, lane), sy = lane_of(r.sy, lane);       // |sx|, |sy| <= 1
+        const double side = n[0] * p[0][0] + n[1] * p[0][1] + n[2] * p[0][2];  // n . A
+        const double toward = n[0] * sx + n[1] * sy + n[2];                    // n . d / d[kz]
+        const double delta_e = gamma(1) * e + gamma(2) * 2.0 * m;
+        const double delta_n = gamma(2) * 2.0 * e * e + 4.0 * e * delta_e + 2.0 * delta_e * delta_e;
+        const double side_error =
+            2.0 * (gamma(3) * 3.0 * n_max * m + 3.0 * m * (gamma(1) * n_max + delta_n));
+        const double toward_error =
+            2.0 * (gamma(3) * 3.0 * n_max + 0x1p-23 * 2.0 * n_max + 3.0 * delta_n);
+        if (std::fabs(side) <= side_error || std::fabs(toward) <= toward_error) continue;
+        const double t_exact = side * lane_of(r.sz, lane) / toward;  // n . A / n . d
+        const auto t_float = float(t_exact);
+        if (!(t_float > 0.0f) || t_exact >= double(limit[lane])) continue;
+        ahead.t[lane] = t_float;
+        ahead.lanes |= 1u << lane;
+    }
+    return ahead;
+}
+
 // The lanes of `asked` whose triangle the ray hits: the edge functions of one sign and
 // det != 0 (the hit is inside), t in (0, limit) and beyond its rounding error. Writes
-// each lane's t (meaningful in the lanes returned). sz, abs_sz: the shear's sz and |sz|.
+// each lane's t (meaningful in the lanes returned). corner(vertex, axis): a coordinate,
+// as lanes; r: the shear (ShearedRay, or the packets' ShearedRays); abs_sz: its |sz|.
 // The one test of both the single ray's leaves and the packets' (core/triangle_packet.h).
-template <class V, class S>
-[[gnu::always_inline]] inline unsigned watertight_hits(const WatertightValues<V>& o, S sz,
+template <class V, class Corner, class R>
+[[gnu::always_inline]] inline unsigned watertight_hits(const WatertightValues<V>& o,
+                                                       const Corner& corner, const R& r,
                                                        const V& abs_sz, const V& limit,
                                                        unsigned asked, V& t) {
+    const auto sz = r.sz;
     using enum Compare;
     const V zero = splat<V>(0.0f);
     const unsigned same_sign =
@@ -127,24 +198,42 @@ template <class V, class S>
     if (candidates == 0) return 0;
     // A triangle wholly in front of the origin is met at t > 0 wherever the ray meets it:
     // t is its corners' distances along the ray (each az * sz, its sign exact: a rounded
-    // difference is 0 only where the two are equal), weighted by the barycentrics. Only
-    // a triangle that spans the origin's plane needs the bound, which is loose where the
-    // edge functions cancel (a sliver seen edge-on: |t * det| is tiny there whatever t
-    // is, and a fan of thousands met at its centre had holes).
+    // difference is 0 only where the two are equal), weighted by the barycentrics. One
+    // that spans the origin's plane is met ahead where |t * det| passes the bound on its
+    // rounding, or else where the plane test in double precision says so: the bound is
+    // loose on a sliver (its edge functions cancel, and |t * det| is as small as det
+    // whatever t is: a fan of thousands met at its centre had holes, a twisted tube of
+    // slivers lost hits 0.2 units ahead).
     const unsigned in_front =
         lanes<kGt>(sz * o.az, zero) & lanes<kGt>(sz * o.bz, zero) & lanes<kGt>(sz * o.cz, zero);
-    return candidates & (in_front | lanes<kGt>(vabs(t_scaled), t_det_error(o, abs_sz)));
+    const unsigned sure =
+        candidates & (in_front | lanes<kGt>(vabs(t_scaled), t_det_error(o, abs_sz)));
+    const unsigned doubt = candidates & ~sure;
+    if (doubt == 0) [[likely]]
+        return sure;
+    const PlaneHits<V> plane = plane_hits<V>(corner, r, limit, doubt);
+    t = select_bits(plane.lanes, plane.t, t);
+    return sure | plane.lanes;
 }
 
-// The closest of the triangles in V's lanes (rel: a vertex's coordinate relative to the
-// ray's origin, as lanes) within (0, t_max), among `lanes`.
-template <class V, class Rel>
-[[gnu::always_inline]] inline Triangle4Hit closest_in_lanes(const Rel& rel, const ShearedRay& r,
-                                                            float t_max, unsigned lanes) {
-    const auto o = watertight_values<V>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
+// A corner's coordinate relative to the ray's origin, as lanes (rounded once): the
+// watertight test's input. corner(vertex, axis): the coordinate itself.
+template <class Corner, class R>
+[[gnu::always_inline]] inline auto relative_to_origin(const Corner& corner, const R& r) {
+    return [&corner, &r](int vertex, int axis) { return corner(vertex, axis) - r.origin[axis]; };
+}
+
+// The closest of the triangles in V's lanes (corner(vertex, axis): a coordinate, as
+// lanes) within (0, t_max), among `lanes`.
+template <class V, class Corner>
+[[gnu::always_inline]] inline Triangle4Hit closest_in_lanes(const Corner& corner,
+                                                            const ShearedRay& r, float t_max,
+                                                            unsigned lanes) {
+    const auto o =
+        watertight_values<V>(relative_to_origin(corner, r), r.kx, r.ky, r.kz, r.sx, r.sy);
     V t;
     unsigned candidates =
-        watertight_hits(o, r.sz, splat<V>(std::fabs(r.sz)), splat<V>(t_max), lanes, t);
+        watertight_hits(o, corner, r, splat<V>(std::fabs(r.sz)), splat<V>(t_max), lanes, t);
     Triangle4Hit best;
     for (; candidates != 0; candidates &= candidates - 1) {
         const int lane = __builtin_ctz(candidates);
@@ -159,12 +248,13 @@ template <class V, class Rel>
 
 // Whether the ray hits any of the lanes' triangles within (0, t_max): the same test, no
 // nearest sought (a shadow feeler's question).
-template <class V, class Rel>
-[[gnu::always_inline]] inline bool any_in_lanes(const Rel& rel, const ShearedRay& r, float t_max,
-                                                unsigned lanes) {
-    const auto o = watertight_values<V>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
+template <class V, class Corner>
+[[gnu::always_inline]] inline bool any_in_lanes(const Corner& corner, const ShearedRay& r,
+                                                float t_max, unsigned lanes) {
+    const auto o =
+        watertight_values<V>(relative_to_origin(corner, r), r.kx, r.ky, r.kz, r.sx, r.sy);
     V t;
-    return watertight_hits(o, r.sz, splat<V>(std::fabs(r.sz)), splat<V>(t_max), lanes, t) != 0;
+    return watertight_hits(o, corner, r, splat<V>(std::fabs(r.sz)), splat<V>(t_max), lanes, t) != 0;
 }
 
 }  // namespace detail
@@ -173,14 +263,14 @@ template <class V, class Rel>
 // lane's answer is the same whichever others are asked for.
 [[gnu::always_inline]] inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r,
                                                      float t_max, unsigned lanes = 0xfu) {
-    const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
-    return detail::closest_in_lanes<Float4>(rel, r, t_max, lanes);
+    const auto corner = [&](int vertex, int axis) { return tri.v[vertex][axis]; };
+    return detail::closest_in_lanes<Float4>(corner, r, t_max, lanes);
 }
 
 [[gnu::always_inline]] inline bool occludes(const Triangle4& tri, const ShearedRay& r,
                                             float t_max) {
-    const auto rel = [&](int vertex, int axis) { return tri.v[vertex][axis] - r.origin[axis]; };
-    return detail::any_in_lanes<Float4>(rel, r, t_max, 0xfu);
+    const auto corner = [&](int vertex, int axis) { return tri.v[vertex][axis]; };
+    return detail::any_in_lanes<Float4>(corner, r, t_max, 0xfu);
 }
 
 #if defined(__AVX__)
@@ -189,17 +279,17 @@ template <class V, class Rel>
 // The hit's lane: 0-3 in `a`, 4-7 in `b`.
 [[gnu::always_inline]] inline Triangle4Hit intersect(const Triangle4& a, const Triangle4& b,
                                                      const ShearedRay& r, float t_max) {
-    const auto rel = [&](int vertex, int axis) {
-        return Float8(_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis])) - r.origin[axis];
+    const auto corner = [&](int vertex, int axis) {
+        return Float8(_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis]));
     };
-    return detail::closest_in_lanes<Float8>(rel, r, t_max, 0xffu);
+    return detail::closest_in_lanes<Float8>(corner, r, t_max, 0xffu);
 }
 [[gnu::always_inline]] inline bool occludes(const Triangle4& a, const Triangle4& b,
                                             const ShearedRay& r, float t_max) {
-    const auto rel = [&](int vertex, int axis) {
-        return Float8(_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis])) - r.origin[axis];
+    const auto corner = [&](int vertex, int axis) {
+        return Float8(_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis]));
     };
-    return detail::any_in_lanes<Float8>(rel, r, t_max, 0xffu);
+    return detail::any_in_lanes<Float8>(corner, r, t_max, 0xffu);
 }
 #endif
 

@@ -90,18 +90,20 @@ struct ShearedRays {
 
 namespace detail {
 
-// The watertight test of one triangle per ray, the rays as the lanes: rel(vertex, axis)
-// gives each lane's vertex minus its ray's origin. Returns the rays of `lanes` that hit
+// The watertight test of one triangle per ray, the rays as the lanes: corner(vertex, axis)
+// gives each lane's vertex. Returns the rays of `lanes` that hit
 // within their `limit` (their t in `t`); with kBarycentrics, b1 and b2 as well.
-template <bool kBarycentrics, int N, class Rel>
-[[gnu::always_inline]] inline unsigned watertight_lanes(const Rel& rel, const ShearedRays<N>& r,
+template <bool kBarycentrics, int N, class Corner>
+[[gnu::always_inline]] inline unsigned watertight_lanes(const Corner& corner,
+                                                        const ShearedRays<N>& r,
                                                         const typename Lanes<N>::Float& limit,
                                                         unsigned lanes, typename Lanes<N>::Float& t,
                                                         typename Lanes<N>::Float& b1,
                                                         typename Lanes<N>::Float& b2) {
     using Float = typename Lanes<N>::Float;
-    const auto o = watertight_values<Float>(rel, r.kx, r.ky, r.kz, r.sx, r.sy);
-    const unsigned candidates = watertight_hits(o, r.sz, r.abs_sz, limit, lanes, t);
+    const auto o =
+        watertight_values<Float>(relative_to_origin(corner, r), r.kx, r.ky, r.kz, r.sx, r.sy);
+    const unsigned candidates = watertight_hits(o, corner, r, r.abs_sz, limit, lanes, t);
     if constexpr (kBarycentrics) {
         if (candidates != 0) {
             b1 = o.v / o.det;  // each lane's own IEEE division
@@ -126,11 +128,11 @@ template <bool kAnyHit, int N>
     unsigned found = 0;
     for (int j = 0; j < 4; ++j) {
         if (((triangles >> j) & 1u) == 0) continue;
-        const auto rel = [&](int vertex, int axis) {
-            return splat<Float>(tri.v[vertex][axis][j]) - r.origin[axis];
+        const auto corner = [&](int vertex, int axis) {
+            return splat<Float>(tri.v[vertex][axis][j]);
         };
         Float t, v, w;
-        unsigned candidates = detail::watertight_lanes<!kAnyHit>(rel, r, limit, lanes, t, v, w);
+        unsigned candidates = detail::watertight_lanes<!kAnyHit>(corner, r, limit, lanes, t, v, w);
         if constexpr (kAnyHit) {
             found |= candidates;
             lanes &= ~candidates;
