@@ -82,16 +82,18 @@ struct TriangleMesh {
     }
     // The nearest of a leaf's `count` triangles, from pack `start` on, that the ray hits
     // within t_max; its lane counts on from the first pack's (lanes 4-7: the second pack).
-    // Five to eight under AVX: the two packs in one test of eight lanes.
+    // Five to eight under AVX: the two packs in one test of eight lanes. `deferred`: as
+    // rt::intersect's (nonzero where the leaf left a triangle unsettled).
     [[gnu::always_inline]] Triangle4Hit leaf_hit(std::uint32_t start, std::uint32_t count,
-                                                 const ShearedRay& r, float t_max) const {
+                                                 const ShearedRay& r, float t_max,
+                                                 unsigned* deferred = nullptr) const {
 #if defined(__AVX__)
         if (count > kTriangle4Lanes && count <= 2 * kTriangle4Lanes)
-            return rt::intersect(packs_[start], packs_[start + 1], r, t_max);
+            return rt::intersect(packs_[start], packs_[start + 1], r, t_max, deferred);
 #endif
         Triangle4Hit best;
         for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
-            Triangle4Hit h = rt::intersect(packs_[start + k], r, t_max);
+            Triangle4Hit h = rt::intersect(packs_[start + k], r, t_max, 0xfu, deferred);
             if (h.lane < 0) continue;
             t_max = h.t;
             h.lane += static_cast<int>(kTriangle4Lanes * k);
@@ -101,13 +103,14 @@ struct TriangleMesh {
     }
     // Whether the ray hits any of the leaf's triangles within t_max (leaf_hit's lane >= 0).
     [[gnu::always_inline]] bool leaf_blocks(std::uint32_t start, std::uint32_t count,
-                                            const ShearedRay& r, float t_max) const {
+                                            const ShearedRay& r, float t_max,
+                                            unsigned* deferred = nullptr) const {
 #if defined(__AVX__)
         if (count > kTriangle4Lanes && count <= 2 * kTriangle4Lanes)
-            return rt::occludes(packs_[start], packs_[start + 1], r, t_max);
+            return rt::occludes(packs_[start], packs_[start + 1], r, t_max, deferred);
 #endif
         for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k)
-            if (rt::occludes(packs_[start + k], r, t_max)) return true;
+            if (rt::occludes(packs_[start + k], r, t_max, deferred)) return true;
         return false;
     }
 };

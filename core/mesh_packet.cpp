@@ -62,6 +62,7 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
         t_max[__builtin_ctz(m)] = hits[__builtin_ctz(m)].t;
     PacketShear lazy_shear(rays, active);
     unsigned found = 0, alone = 0;  // hits in the packet's leaves, and of rays traced alone
+    unsigned unsure = 0;            // rays a leaf's test left unsettled: traced alone after
     accel_.traverse_packet<false>(
         rays, t_max.data(), active,
         [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
@@ -82,7 +83,7 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
                 for (std::uint32_t k = 0; kTriangle4Lanes * k < count; ++k) {
                     unsigned h =
                         rt::intersect<false>(packs_[start + k], shear.together, lanes, t_max.data(),
-                                             lane.data(), b1.data(), b2.data());
+                                             lane.data(), b1.data(), b2.data(), 0xfu, &unsure);
                     for (; h != 0; h &= h - 1) {
                         const unsigned ray = __builtin_ctz(h);
                         record(ray, start + k, lane[ray], b1[ray], b2[ray]);
@@ -91,7 +92,10 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
             } else {
                 for (; lanes != 0; lanes &= lanes - 1) {
                     const unsigned ray = __builtin_ctz(lanes);
-                    const Triangle4Hit h = leaf_hit(start, count, shear.each[ray], t_max[ray]);
+                    unsigned doubt = 0;
+                    const Triangle4Hit h =
+                        leaf_hit(start, count, shear.each[ray], t_max[ray], &doubt);
+                    unsure |= unsigned{doubt != 0} << ray;
                     if (h.lane < 0) continue;
                     t_max[ray] = h.t;
                     record(ray, start, h.lane, h.b1, h.b2);
@@ -110,6 +114,13 @@ unsigned TriangleMesh::intersect_packet(const Ray* rays, Hit* hits, unsigned act
         const unsigned lane = __builtin_ctz(m);
         hits[lane].t = t_max[lane];
     }
+    // A ray with a hit that only the plane test settles (a sliver spanning its origin's
+    // plane, core/triangle4.h: a handful a frame) is traced again alone, within the hit
+    // it has: it gets the very hit it gets alone, and the call stays out of the loops.
+    for (unsigned m = unsure; m != 0; m &= m - 1) {
+        const unsigned lane = __builtin_ctz(m);
+        if (intersect(rays[lane], hits[lane])) alone |= 1u << lane;
+    }
     return found | alone;
 }
 
@@ -118,7 +129,7 @@ unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsi
     for (unsigned m = active; m != 0; m &= m - 1)
         limits[__builtin_ctz(m)] = t_max[__builtin_ctz(m)];
     PacketShear lazy_shear(rays, active);
-    unsigned blocked = 0;
+    unsigned blocked = 0, unsure = 0;  // unsure: as intersect_packet's
     accel_.traverse_packet<true>(
         rays, limits.data(), active,
         [&](std::uint32_t leaf, std::uint32_t count, unsigned lanes) RT_FORCE_INLINE {
@@ -129,14 +140,17 @@ unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsi
                 for (std::uint32_t k = 0; kTriangle4Lanes * k < count && lanes != 0; ++k) {
                     const unsigned h =
                         rt::intersect<true>(packs_[start + k], shear.together, lanes, limits.data(),
-                                            nullptr, nullptr, nullptr);
+                                            nullptr, nullptr, nullptr, 0xfu, &unsure);
                     hit |= h;
                     lanes &= ~h;
                 }
             } else {
                 for (; lanes != 0; lanes &= lanes - 1) {
                     const unsigned ray = __builtin_ctz(lanes);
-                    if (leaf_blocks(start, count, shear.each[ray], limits[ray])) hit |= 1u << ray;
+                    unsigned doubt = 0;
+                    if (leaf_blocks(start, count, shear.each[ray], limits[ray], &doubt))
+                        hit |= 1u << ray;
+                    unsure |= unsigned{doubt != 0} << ray;
                 }
             }
             blocked |= hit;
@@ -148,6 +162,10 @@ unsigned TriangleMesh::occluded_packet(const Ray* rays, const float* t_max, unsi
                 if (occluded(rays[lane], t_max[lane])) blocked |= 1u << lane;
             }
         });
+    for (unsigned m = unsure & ~blocked; m != 0; m &= m - 1) {
+        const unsigned lane = __builtin_ctz(m);
+        if (occluded(rays[lane], t_max[lane])) blocked |= 1u << lane;
+    }
     return blocked;
 }
 

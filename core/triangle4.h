@@ -179,11 +179,16 @@ template <class V, class Corner, class R>
 // each lane's t (meaningful in the lanes returned). corner(vertex, axis): a coordinate,
 // as lanes; r: the shear (ShearedRay, or the packets' ShearedRays); abs_sz: its |sz|.
 // The one test of both the single ray's leaves and the packets' (core/triangle_packet.h).
+// `deferred`: where given, the lanes that only the plane test could settle are added to
+// it and left out, not settled here: a packet's walk traces those rays alone afterwards
+// (core/mesh_packet.cpp), which keeps the rare call out of its loops (5 % of the hall's
+// feeler packets with it in; docs/BENCHMARKS.md, fortieth session).
 template <class V, class Corner, class R>
 [[gnu::always_inline]] inline unsigned watertight_hits(const WatertightValues<V>& o,
                                                        const Corner& corner, const R& r,
                                                        const V& abs_sz, const V& limit,
-                                                       unsigned asked, V& t) {
+                                                       unsigned asked, V& t,
+                                                       unsigned* deferred = nullptr) {
     const auto sz = r.sz;
     using enum Compare;
     const V zero = splat<V>(0.0f);
@@ -211,6 +216,10 @@ template <class V, class Corner, class R>
     const unsigned doubt = candidates & ~sure;
     if (doubt == 0) [[likely]]
         return sure;
+    if (deferred != nullptr) {
+        *deferred |= doubt;
+        return sure;
+    }
     const PlaneHits<V> plane = plane_hits<V>(corner, r, limit, doubt);
     t = select_bits(plane.lanes, plane.t, t);
     return sure | plane.lanes;
@@ -228,12 +237,13 @@ template <class Corner, class R>
 template <class V, class Corner>
 [[gnu::always_inline]] inline Triangle4Hit closest_in_lanes(const Corner& corner,
                                                             const ShearedRay& r, float t_max,
-                                                            unsigned lanes) {
+                                                            unsigned lanes,
+                                                            unsigned* deferred = nullptr) {
     const auto o =
         watertight_values<V>(relative_to_origin(corner, r), r.kx, r.ky, r.kz, r.sx, r.sy);
     V t;
-    unsigned candidates =
-        watertight_hits(o, corner, r, splat<V>(std::fabs(r.sz)), splat<V>(t_max), lanes, t);
+    unsigned candidates = watertight_hits(o, corner, r, splat<V>(std::fabs(r.sz)), splat<V>(t_max),
+                                          lanes, t, deferred);
     Triangle4Hit best;
     for (; candidates != 0; candidates &= candidates - 1) {
         const int lane = __builtin_ctz(candidates);
@@ -250,27 +260,31 @@ template <class V, class Corner>
 // nearest sought (a shadow feeler's question).
 template <class V, class Corner>
 [[gnu::always_inline]] inline bool any_in_lanes(const Corner& corner, const ShearedRay& r,
-                                                float t_max, unsigned lanes) {
+                                                float t_max, unsigned lanes,
+                                                unsigned* deferred = nullptr) {
     const auto o =
         watertight_values<V>(relative_to_origin(corner, r), r.kx, r.ky, r.kz, r.sx, r.sy);
     V t;
-    return watertight_hits(o, corner, r, splat<V>(std::fabs(r.sz)), splat<V>(t_max), lanes, t) != 0;
+    return watertight_hits(o, corner, r, splat<V>(std::fabs(r.sz)), splat<V>(t_max), lanes, t,
+                           deferred) != 0;
 }
 
 }  // namespace detail
 
 // `lanes`: the lanes that may hit (a bit each); the others are computed and ignored, so a
-// lane's answer is the same whichever others are asked for.
+// lane's answer is the same whichever others are asked for. `deferred`: as watertight_hits'
+// (its bits, where given: the lanes left unsettled).
 [[gnu::always_inline]] inline Triangle4Hit intersect(const Triangle4& tri, const ShearedRay& r,
-                                                     float t_max, unsigned lanes = 0xfu) {
+                                                     float t_max, unsigned lanes = 0xfu,
+                                                     unsigned* deferred = nullptr) {
     const auto corner = [&](int vertex, int axis) { return tri.v[vertex][axis]; };
-    return detail::closest_in_lanes<Float4>(corner, r, t_max, lanes);
+    return detail::closest_in_lanes<Float4>(corner, r, t_max, lanes, deferred);
 }
 
-[[gnu::always_inline]] inline bool occludes(const Triangle4& tri, const ShearedRay& r,
-                                            float t_max) {
+[[gnu::always_inline]] inline bool occludes(const Triangle4& tri, const ShearedRay& r, float t_max,
+                                            unsigned* deferred = nullptr) {
     const auto corner = [&](int vertex, int axis) { return tri.v[vertex][axis]; };
-    return detail::any_in_lanes<Float4>(corner, r, t_max, 0xfu);
+    return detail::any_in_lanes<Float4>(corner, r, t_max, 0xfu, deferred);
 }
 
 #if defined(__AVX__)
@@ -278,18 +292,20 @@ template <class V, class Corner>
 // a wide BVH's leaf of five to eight triangles costs one test, as a leaf of four does.
 // The hit's lane: 0-3 in `a`, 4-7 in `b`.
 [[gnu::always_inline]] inline Triangle4Hit intersect(const Triangle4& a, const Triangle4& b,
-                                                     const ShearedRay& r, float t_max) {
+                                                     const ShearedRay& r, float t_max,
+                                                     unsigned* deferred = nullptr) {
     const auto corner = [&](int vertex, int axis) {
         return Float8(_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis]));
     };
-    return detail::closest_in_lanes<Float8>(corner, r, t_max, 0xffu);
+    return detail::closest_in_lanes<Float8>(corner, r, t_max, 0xffu, deferred);
 }
 [[gnu::always_inline]] inline bool occludes(const Triangle4& a, const Triangle4& b,
-                                            const ShearedRay& r, float t_max) {
+                                            const ShearedRay& r, float t_max,
+                                            unsigned* deferred = nullptr) {
     const auto corner = [&](int vertex, int axis) {
         return Float8(_mm256_set_m128(b.v[vertex][axis], a.v[vertex][axis]));
     };
-    return detail::any_in_lanes<Float8>(corner, r, t_max, 0xffu);
+    return detail::any_in_lanes<Float8>(corner, r, t_max, 0xffu, deferred);
 }
 #endif
 

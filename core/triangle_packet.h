@@ -93,17 +93,16 @@ namespace detail {
 // The watertight test of one triangle per ray, the rays as the lanes: corner(vertex, axis)
 // gives each lane's vertex. Returns the rays of `lanes` that hit
 // within their `limit` (their t in `t`); with kBarycentrics, b1 and b2 as well.
+// `deferred`: as watertight_hits' (core/triangle4.h).
 template <bool kBarycentrics, int N, class Corner>
-[[gnu::always_inline]] inline unsigned watertight_lanes(const Corner& corner,
-                                                        const ShearedRays<N>& r,
-                                                        const typename Lanes<N>::Float& limit,
-                                                        unsigned lanes, typename Lanes<N>::Float& t,
-                                                        typename Lanes<N>::Float& b1,
-                                                        typename Lanes<N>::Float& b2) {
+[[gnu::always_inline]] inline unsigned watertight_lanes(
+    const Corner& corner, const ShearedRays<N>& r, const typename Lanes<N>::Float& limit,
+    unsigned lanes, typename Lanes<N>::Float& t, typename Lanes<N>::Float& b1,
+    typename Lanes<N>::Float& b2, unsigned* deferred = nullptr) {
     using Float = typename Lanes<N>::Float;
     const auto o =
         watertight_values<Float>(relative_to_origin(corner, r), r.kx, r.ky, r.kz, r.sx, r.sy);
-    const unsigned candidates = watertight_hits(o, corner, r, r.abs_sz, limit, lanes, t);
+    const unsigned candidates = watertight_hits(o, corner, r, r.abs_sz, limit, lanes, t, deferred);
     if constexpr (kBarycentrics) {
         if (candidates != 0) {
             b1 = o.v / o.det;  // each lane's own IEEE division
@@ -118,11 +117,13 @@ template <bool kBarycentrics, int N, class Corner>
 // Per ray, the nearest hit of the pack's triangles within its own (0, t_max): fills
 // t_max, lane (the triangle's lane in the pack), b1 and b2 of the rays that hit one and
 // returns their bits. kAnyHit: returns the rays that hit any, nothing else written.
-// `triangles`: the pack's lanes to test (the item buffer names one).
+// `triangles`: the pack's lanes to test (the item buffer names one). `deferred`: where
+// given, the rays a triangle left unsettled (watertight_hits) are added to it.
 template <bool kAnyHit, int N>
 [[gnu::always_inline]] inline unsigned intersect(const Triangle4& tri, const ShearedRays<N>& r,
                                                  unsigned lanes, float* t_max, int* lane_out,
-                                                 float* b1, float* b2, unsigned triangles = 0xfu) {
+                                                 float* b1, float* b2, unsigned triangles = 0xfu,
+                                                 unsigned* deferred = nullptr) {
     using Float = typename Lanes<N>::Float;
     Float limit = select_bits(lanes, load<Float>(t_max), splat<Float>(0.0f));
     unsigned found = 0;
@@ -132,7 +133,8 @@ template <bool kAnyHit, int N>
             return splat<Float>(tri.v[vertex][axis][j]);
         };
         Float t, v, w;
-        unsigned candidates = detail::watertight_lanes<!kAnyHit>(corner, r, limit, lanes, t, v, w);
+        unsigned candidates =
+            detail::watertight_lanes<!kAnyHit>(corner, r, limit, lanes, t, v, w, deferred);
         if constexpr (kAnyHit) {
             found |= candidates;
             lanes &= ~candidates;

@@ -11,6 +11,7 @@ flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-fr
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DRTVIEW_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_UNITY_BUILD=ON \
     -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" >/dev/null
 cmake --build build-fuzz
+echo "== fuzzers built at ${SECONDS} s of fuzz.sh"
 status=0
 for target in json:fuzz_scene_json obj:fuzz_obj bvh:fuzz_bvh gltf:fuzz_gltf mesh:fuzz_ply_stl image:fuzz_image; do
     corpus=${target%%:*} binary=${target#*:}

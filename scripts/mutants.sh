@@ -316,10 +316,16 @@ mutant collapse-never-spreads-a-subtree core/wide_bvh.cpp \
 # it the plane test in double precision accepts the same hits (the fan's slivers), so a
 # mutant that drops it changes nothing a test can see but the time.
 mutant triangle-plane-test-left-out core/triangle4.h \
-    'if (doubt == 0) return sure;' 'if (doubt == 0 || true) return sure;' \
+    'return sure | plane.lanes;' 'return sure;' \
     rt_tests $(unit 'Watertight.*')
 mutant triangle-plane-test-t-of-the-wrong-sign core/triangle4.h \
     'const double t_exact = side *' 'const double t_exact = -side *' \
+    rt_tests $(unit 'Watertight.*')
+mutant packet-unsure-rays-not-traced-again core/mesh_packet.cpp \
+    'for (unsigned m = unsure; m != 0;' 'for (unsigned m = 0u; m != 0;' \
+    rt_tests $(unit 'Watertight.*')
+mutant packet-unsure-feelers-not-traced-again core/mesh_packet.cpp \
+    'for (unsigned m = unsure & ~blocked; m != 0;' 'for (unsigned m = 0u; m != 0;' \
     rt_tests $(unit 'Watertight.*')
 mutant collapse-right-costs-read-a-lane-off core/wide_bvh.cpp \
     'right.data() + N - k,' 'right.data() + N - k + 1,' \

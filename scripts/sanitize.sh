@@ -24,6 +24,7 @@ cmake -S . -B build-asan -G Ninja "${debug[@]}" -DRTVIEW_BUILD_VIEWER=ON \
     -DCMAKE_CXX_FLAGS="$asan" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined,float-cast-overflow $PWD/build-asan/keep_libraries.o" >/dev/null
 cmake --build build-asan
+echo "== AddressSanitizer's tests, built at ${SECONDS} s of sanitize.sh"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 # LeakSanitizer's check sometimes crashes ("Tracer caught signal 11: ... LeakSanitizer
@@ -74,13 +75,15 @@ no_leak_check='^Image\.ExrIsReadAndWrittenOnTheCallersThread$'
 asan_ctest -j "$(nproc)" -LE "gui|soak|oracle" -E "$no_leak_check" || status=1
 ASAN_OPTIONS="detect_leaks=0:abort_on_error=1" ctest --test-dir build-asan --output-on-failure \
     -R "$no_leak_check" || status=1
+echo "== the viewer under AddressSanitizer, at ${SECONDS} s of sanitize.sh"
 asan_ctest -L gui || status=1
 unset LSAN_OPTIONS UBSAN_OPTIONS
 
-echo "== ThreadSanitizer"
+echo "== ThreadSanitizer, at ${SECONDS} s of sanitize.sh"
 cmake -S . -B build-tsan -G Ninja "${debug[@]}" -DCMAKE_CXX_FLAGS="-fsanitize=thread" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" >/dev/null
 cmake --build build-tsan --target rt_threaded_tests rt_viewer_tests
+echo "== ThreadSanitizer's tests, built at ${SECONDS} s of sanitize.sh"
 TSAN_OPTIONS="halt_on_error=1" build-tsan/tests/rt_threaded_tests --gtest_filter="Render.*:*AccelTest.*:Bvh.*:*WideBvhTest*" || status=1
 TSAN_OPTIONS="halt_on_error=1" build-tsan/tests/rt_viewer_tests --gtest_filter='TraceJob.*' || status=1
 exit $status

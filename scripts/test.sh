@@ -21,6 +21,7 @@ if [ $quick -eq 1 ]; then
   ctest --test-dir build --output-on-failure -j "$(nproc)" -L "unit|gl|golden|cli" || status=$?
   exit $status
 fi
+echo "== the main suite, built at ${SECONDS} s"
 ctest --test-dir build --output-on-failure -j "$(nproc)" || status=$?
 [ -f build/golden_report/index.html ] && echo "screenshot report: build/golden_report/index.html"
 
@@ -34,6 +35,7 @@ echo "== headless configuration (-DRTVIEW_BUILD_VIEWER=OFF), at ${SECONDS} s"
 cmake -S . -B build-headless -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTVIEW_WERROR=ON -DRTVIEW_BUILD_VIEWER=OFF \
     -DCMAKE_UNITY_BUILD=ON >/dev/null
 cmake --build build-headless --target rtrender rtbench rtgolden rt_gl_tests
+echo "== headless tests, built at ${SECONDS} s"
 ctest --test-dir build-headless --output-on-failure -j "$(nproc)" -L "gl|golden|cli" || status=$?
 
 echo "== sanitizers, at ${SECONDS} s"

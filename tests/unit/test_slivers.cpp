@@ -36,11 +36,14 @@ TriangleMesh twisted_sliver(int i) {
 // points well inside it: every one hits, at its distance (checked in double precision).
 // The edge functions' bound alone rejected most hits nearer than ~0.3 units; the plane
 // test in double precision (plane_hits) settles them. Single rays, and packets of rays
-// from one origin.
+// from one origin, nearest hits and feelers: the whole packet (its leaves test the
+// triangle across the rays) and two of its rays (each tests the leaf alone); the packets
+// leave such hits to a trace of the ray alone after their walk (core/mesh_packet.cpp).
 TEST(Watertight, NoRayMissesASliverAheadThatSpansItsOriginsPlane) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    int misses = 0, packet_misses = 0, far_off = 0, rays = 0;
+    int misses = 0, far_off = 0, rays = 0;
+    int packet_misses = 0, feeler_misses = 0, pair_misses = 0, pair_feeler_misses = 0;
     for (int s = 0; s < 2000; ++s) {
         const TriangleMesh m = twisted_sliver(static_cast<int>(rng() % 30000));
         const glm::dvec3 a(m.positions[0]), b(m.positions[1]), c(m.positions[2]);
@@ -69,12 +72,26 @@ TEST(Watertight, NoRayMissesASliverAheadThatSpansItsOriginsPlane) {
                 far_off += std::fabs(hit.t - expected) > 1e-2 * expected;
             }
         }
-        std::array<Hit, kPacketWidth> hits{};
-        const unsigned all = (1u << kPacketWidth) - 1u;
-        packet_misses += std::popcount(all & ~m.intersect_packet(packet.data(), hits.data(), all));
+        const unsigned all = (1u << kPacketWidth) - 1u, pair = 0x5u;
+        const auto packet_hits = [&](unsigned lanes) {
+            std::array<Hit, kPacketWidth> hits{};
+            return std::popcount(lanes & ~m.intersect_packet(packet.data(), hits.data(), lanes));
+        };
+        std::array<float, kPacketWidth> far;
+        far.fill(kInfinity);
+        const auto feelers = [&](unsigned lanes) {
+            return std::popcount(lanes & ~m.occluded_packet(packet.data(), far.data(), lanes));
+        };
+        packet_misses += packet_hits(all);
+        feeler_misses += feelers(all);
+        pair_misses += packet_hits(pair);
+        pair_feeler_misses += feelers(pair);
     }
     EXPECT_EQ(misses, 0) << "of " << rays;
     EXPECT_EQ(packet_misses, 0) << "of " << rays;
+    EXPECT_EQ(feeler_misses, 0) << "of " << rays;
+    EXPECT_EQ(pair_misses, 0) << "of " << rays / kPacketWidth * 2;
+    EXPECT_EQ(pair_feeler_misses, 0) << "of " << rays / kPacketWidth * 2;
     EXPECT_EQ(far_off, 0);
 }
 
