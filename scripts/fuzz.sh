@@ -12,17 +12,29 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DRTVIEW_FUZZ=ON -DCMAKE_
     -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" >/dev/null
 cmake --build build-fuzz
 echo "== fuzzers built at ${SECONDS} s of fuzz.sh"
-status=0
-for target in json:fuzz_scene_json obj:fuzz_obj bvh:fuzz_bvh gltf:fuzz_gltf mesh:fuzz_ply_stl image:fuzz_image; do
-    corpus=${target%%:*} binary=${target#*:}
-    work=build-fuzz/corpus-$corpus
-    mkdir -p "$work"
-    echo "== $binary: ${seconds}s from tests/fuzz/corpus/$corpus"
-    run=0
+# The fuzzers run at once, as many as there are cores (each is one process on one core):
+# each still has its SECONDS, and CI waits for a third of the time on two cores.
+run_fuzzer() {  # run_fuzzer CORPUS BINARY: its exit status in build-fuzz/BINARY.status
+    local corpus=$1 binary=$2 run=0
+    mkdir -p "build-fuzz/corpus-$corpus"
     (cd build-fuzz && tests/fuzz/"$binary" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=4096 \
         -print_final_stats=1 "corpus-$corpus" "../tests/fuzz/corpus/$corpus" >"$binary.log" 2>&1) || run=$?
+    echo "$run" >"build-fuzz/$binary.status"
+}
+targets=(json:fuzz_scene_json obj:fuzz_obj bvh:fuzz_bvh gltf:fuzz_gltf mesh:fuzz_ply_stl image:fuzz_image)
+for target in "${targets[@]}"; do
+    while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n || true; done
+    rm -f "build-fuzz/${target#*:}.status"
+    run_fuzzer "${target%%:*}" "${target#*:}" &
+done
+wait
+status=0
+for target in "${targets[@]}"; do
+    corpus=${target%%:*} binary=${target#*:}
+    echo "== $binary: ${seconds}s from tests/fuzz/corpus/$corpus"
+    run=$(cat "build-fuzz/$binary.status" 2>/dev/null || echo "no status")
     grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|stat::peak_rss_mb)" "build-fuzz/$binary.log" || true
-    if [ "$run" -ne 0 ]; then
+    if [ "$run" != 0 ]; then
         grep -E "ERROR|SUMMARY|Test unit written|==[0-9]+==" "build-fuzz/$binary.log" | head -20
         echo "FAIL $binary (exit $run): see build-fuzz/$binary.log and build-fuzz/crash-*"
         status=1
