@@ -181,7 +181,7 @@ template <class V, class Corner, class R>
 // The one test of both the single ray's leaves and the packets' (core/triangle_packet.h).
 // `deferred`: where given, the lanes that only the plane test could settle are added to
 // it and left out, not settled here: a packet's walk traces those rays alone afterwards
-// (core/mesh_packet.cpp), which keeps the rare call out of its loops (5 % of the hall's
+// (core/mesh_packet.cpp), which keeps the rare call out of its loops (2-5 % of the hall's
 // feeler packets with it in; docs/BENCHMARKS.md, fortieth session).
 template <class V, class Corner, class R>
 [[gnu::always_inline]] inline unsigned watertight_hits(const WatertightValues<V>& o,
