@@ -26,7 +26,12 @@ struct ShearedRay {
     float origin[3]{};
 
     ShearedRay() = default;
-    explicit ShearedRay(const Ray& r) : origin{r.origin.x, r.origin.y, r.origin.z} {
+    // Always inlined: GCC's inliner weighs it against everything else in the calling file,
+    // and when core/mesh.cpp's build() grew (thirty-eighth session) it became a call at
+    // each ray's first leaf; on Zen 4 single shadow and secondary rays took 10-30 % longer
+    // (docs/BENCHMARKS.md, forty-first session).
+    [[gnu::always_inline]] explicit ShearedRay(const Ray& r)
+        : origin{r.origin.x, r.origin.y, r.origin.z} {
         const float d[3] = {r.dir.x, r.dir.y, r.dir.z};
         const float ax = std::fabs(d[0]), ay = std::fabs(d[1]), az = std::fabs(d[2]);
         kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
