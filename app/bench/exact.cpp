@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 namespace rt::bench {
@@ -19,13 +21,54 @@ constexpr double kEdgeNoise = 1e-6;
 struct DoubleHit {
     bool hit = false, grazing = false;
     double t = 0.0;
-    // How far t may be off in a float test and still be right: the triangle's corners are
-    // rounded to floats relative to the ray's origin, so the plane a float test meets may
-    // lie kTMargin of their distance from the origin away from the exact one, which moves
-    // t by that over the ray's speed towards the plane (a ground 120 units wide met 1e-3
-    // from a ray's start: 4e-6 apart, 1e-4 of t).
+    // How far t may be off in a float test and still be right: t_rounding.
     double slack = 0.0;
 };
+
+// How far a float watertight test's t (Woop, Benthin and Wald; core/triangle4.h's) may
+// lie from the exact t, the same whichever corner is called a. Each corner relative to
+// the origin is sheared onto the ray's major axis (x, y across it, t_j along it): x and y
+// are rounded by up to u (4 R + X) (u = 2^-24, R the corners' largest coordinate relative
+// to the origin, X the largest |x| or |y|), so each edge function e_j, a difference of
+// two products of them, by up to u (8 R X + 5 X^2) (PBR 3.9.6's delta_e), which moves
+// t = sum(e_j t_j) / sum(e_j) by that times sum |t_j - t| / |sum e_j|; rounding t_j, the
+// products, the sum and the division move it by up to about 7 u of sum |e_j t_j| / |sum
+// e_j|. Taken as 8 u (R X + X^2) and 8 u: about the first-order worst case. A sliver long
+// across the ray has X its length over sum e_j its area: on a twisted tube's slivers 6
+// units long and 2e-4 wide, hits 1e-4 to 2e-4 units from a feeler's start, which Embree
+// met, had t <= 0 in our float test (1e-3 to 1e-2 units of bound there). Measured: a float t lies
+// at most 0.58 of this from the exact one on the bunny, teapot, terrain and a soup (0.05-0.16 on
+// slivers), 200,000 random rays each (docs/BENCHMARKS.md, forty-first session). Until then the
+// slack was 1e-5 of the corners' distance times |e1| |e2| / |det|, which depends on which corner is
+// a: on a sliver far above this with a at the apex, far below with a at a blunt corner (a false
+// "WRONG" on twist.obj).
+double t_rounding(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3 (&corner)[3],
+                  double t) {
+    constexpr double kEps = 0x1p-24, kEdgeUlps = 8.0, kAxisUlps = 8.0;
+    const glm::dvec3 ad = glm::abs(d);
+    const int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+    const int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    double x[3], y[3], tj[3], r = 0.0, span = 0.0;
+    for (int j = 0; j < 3; ++j) {
+        const glm::dvec3 p = corner[j] - o;
+        tj[j] = p[kz] / d[kz];
+        x[j] = p[kx] - d[kx] * tj[j];
+        y[j] = p[ky] - d[ky] * tj[j];
+        r = std::max({r, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+        span = std::max({span, std::fabs(x[j]), std::fabs(y[j])});
+    }
+    double det = 0.0, moved = 0.0, along = 0.0;
+    for (int j = 0; j < 3; ++j) {
+        const int b = (j + 1) % 3, c = (j + 2) % 3;
+        const double e = x[b] * y[c] - y[b] * x[c];
+        det += e;
+        moved += std::fabs(tj[j] - t);
+        along += std::fabs(e * tj[j]);
+    }
+    if (det == 0.0) return std::numeric_limits<double>::infinity();
+    return (kEdgeUlps * kEps * (r * span + span * span) * moved + kAxisUlps * kEps * along) /
+           std::fabs(det);
+}
 
 // Moeller and Trumbore's test in double precision; `grazing` when the ray passes within
 // kEdgeMargin (in barycentric terms) of the triangle's boundary, inside or out.
@@ -45,7 +88,8 @@ DoubleHit intersect(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& 
     // |e1| |e2|, not |e1 x e2|: a float test's t is e2 . (s x e1) / det rounded, off by
     // that product times the corners' distance, however thin the triangle (a needle's
     // cross product is small, its rounding is not).
-    h.slack = kTMargin * corners * glm::length(e1) * glm::length(e2) / std::fabs(det);
+    const glm::dvec3 corner[3] = {a, b, c};
+    h.slack = t_rounding(o, d, corner, h.t);
     // Each weight's float noise: u * det = s . (d x e2) and v * det = d . (s x e1) are
     // products of the corners' distances and the edges, which a float test rounds to
     // kEdgeNoise of that (|d| = 1), whatever their difference: a needle of a straw seen
