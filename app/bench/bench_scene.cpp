@@ -42,10 +42,22 @@ void time_builds(std::vector<Entry>& entries, const rt::TriangleMesh& mesh, int 
 }
 
 // Each structure against the reference: Embree on every ray if there is one, and brute
-// force on the rays brute force traced. A mismatch beyond a handful of edge cases fails.
-bool check(const std::vector<Entry>& entries, const std::vector<RaySet>& sets,
-           const rt::TriangleMesh& mesh, nlohmann::json& report) {
-    bool ok = true;
+// force on the rays brute force traced. A mismatch of ours beyond the exact test's
+// ambiguous rays fails; one of Embree's against brute force is reported.
+struct Verdict {
+    bool ok = true;             // every structure of ours right where it differs
+    bool embree_wrong = false;  // Embree's wrong somewhere by brute force and the exact test
+    const char* line() const {
+        if (!ok) return "WRONG ANSWERS (see above)";
+        return embree_wrong ? "every structure agrees with the references (Embree's own are wrong "
+                              "on some rays, above)"
+                            : "every structure agrees with the references";
+    }
+};
+
+Verdict check(const std::vector<Entry>& entries, const std::vector<RaySet>& sets,
+              const rt::TriangleMesh& mesh, nlohmann::json& report) {
+    Verdict verdict;
     const ExactTracer exact(mesh);
     const Entry* brute = nullptr;
     const Entry* embree = nullptr;
@@ -73,19 +85,28 @@ bool check(const std::vector<Entry>& entries, const std::vector<RaySet>& sets,
                         "wrong on %zu (exact double-precision test)%s\n",
                         name.c_str(), label, m.ambiguous, label, m.reference_wrong, sample);
                 if (!m.ok()) {
-                    ok = false;
+                    // Embree's own answers are the reference's, not ours: its default triangle
+                    // test is not watertight (a tube of slivers leaks), so where brute force
+                    // catches it out that is said, and the run does not fail for it.
+                    const bool reference = e.structure->name().starts_with("embree");
+                    if (reference)
+                        verdict.embree_wrong = true;
+                    else
+                        verdict.ok = false;
                     std::printf(
-                        "WRONG: %s is wrong where it differs from %s on %zu of %zu rays (%zu "
-                        "hit/miss, %zu other hit)%s\n",
-                        name.c_str(), label, m.hit_miss + m.wrong_hit, m.checked, m.hit_miss,
-                        m.wrong_hit, sample);
+                        "%s: %s is wrong where it differs from %s on %zu of %zu rays (%zu "
+                        "hit/miss, %zu other hit)%s%s\n",
+                        reference ? "Embree" : "WRONG", name.c_str(), label,
+                        m.hit_miss + m.wrong_hit, m.checked, m.hit_miss, m.wrong_hit, sample,
+                        reference ? " (Intel's library, the reference: not a failure of ours)"
+                                  : "");
                 }
             };
             if (brute) against(*brute, "brute");
             if (embree) against(*embree, "embree");
         }
     }
-    return ok;
+    return verdict;
 }
 
 // Our wide BVH against Embree with the guarantees ours give (RTC_SCENE_FLAG_ROBUST: a
@@ -228,7 +249,7 @@ int run_threads_sweep(const SceneBenchOptions& o, const rt::LoadedScene& loaded,
     std::printf("%7s %22s %14s", "threads", "bvh build Mtri/s", "embree Mtri/s");
     nlohmann::json report = {{"scene", o.scene}, {"triangles", mesh.triangles.size()}};
     std::vector<RaySet> sets;
-    bool ok = true;
+    bool ok = true, embree_wrong = false;
     for (int threads : o.threads_sweep) {
         MeasureOptions measure = o.measure;
         measure.threads = threads;
@@ -271,12 +292,13 @@ int run_threads_sweep(const SceneBenchOptions& o, const rt::LoadedScene& loaded,
         }
         std::printf("\n");
         nlohmann::json checks;
-        ok = check(entries, sets, mesh, checks) && ok;
+        const Verdict verdict = check(entries, sets, mesh, checks);
+        ok = verdict.ok && ok;
+        embree_wrong = embree_wrong || verdict.embree_wrong;
         row["checks"] = checks["checks"];
         report["rows"].push_back(row);
     }
-    std::printf("answers: %s\n",
-                ok ? "every structure agrees with the references" : "WRONG ANSWERS (see above)");
+    std::printf("answers: %s\n", Verdict{ok, embree_wrong}.line());
     write_json(o.json, report);
     return ok ? 0 : 1;
 }
@@ -331,14 +353,13 @@ int run_scene(const SceneBenchOptions& o) {
                              {"embree", have_embree()}};
     for (const RaySet& set : sets) report["ray_counts"][set.name] = set.rays.size();
     print_table(entries, sets, mesh.triangles.size(), report);
-    const bool ok = check(entries, sets, mesh, report);
+    const Verdict verdict = check(entries, sets, mesh, report);
     if (o.gpu)  // the GPU entry's context is current
         report["gpu_frame"] =
             time_gpu_frame(loaded.scene, camera, o.gpu_frame, o.measure.repeats, o.measure.threads);
-    std::printf("answers: %s\n",
-                ok ? "every structure agrees with the references" : "WRONG ANSWERS (see above)");
+    std::printf("answers: %s\n", verdict.line());
     write_json(o.json, report);
-    return ok ? 0 : 1;
+    return verdict.ok ? 0 : 1;
 }
 
 }  // namespace rt::bench
