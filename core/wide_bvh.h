@@ -130,7 +130,10 @@ struct BoxRay {
                                           // Ize's factor, so grazing rays are not lost
     int near[3], far[3];
 
-    explicit BoxRay(const Ray& ray) {
+    // Both always inlined, as ShearedRay's constructor (core/triangle4.h): GCC weighs an
+    // inline function against its calling file's growth, and a call here would cost every
+    // node (docs/BENCHMARKS.md, forty-first session).
+    [[gnu::always_inline]] explicit BoxRay(const Ray& ray) {
         // Plain arrays: glm reads a component by a run-time index through a switch.
         const float dir[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
         const float from[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
@@ -144,7 +147,8 @@ struct BoxRay {
         }
     }
     // Entry distances of the children, and a bit per child the ray enters in (0, t_max).
-    unsigned test(const WideBvhNode<N>& n, float t_max, Float& t_enter) const {
+    [[gnu::always_inline]] unsigned test(const WideBvhNode<N>& n, float t_max,
+                                         Float& t_enter) const {
         // (plane - origin) * inv, not plane * inv - origin * inv: one rounding, as Ize's
         // bound assumes; the second form loses rays at shared box faces.
         const auto plane = [&](int index, int a) { return (n.bounds[index] - origin[a]) * inv[a]; };
