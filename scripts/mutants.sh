@@ -871,6 +871,17 @@ mutant gpu-checker-shift-rounded shaders/gputrace.comp \
     'precise vec3 r = (x - product) - error;' 'precise vec3 r = x - product;' \
     rt_gl_tests "${gl[@]}" --gtest_filter='*GpuTrace.AgreesOnTheCorners*'
 
+# rtbench's arbiter (app/bench/exact.cpp) and verdict (app/bench/bench_scene.cpp): the
+# CLI test must notice a slack that depends on the vertex order (a false WRONG on a tube
+# of slivers) and Embree's own errors failing the run.
+mutant arbiter-slack-by-the-first-corner app/bench/exact.cpp \
+    'h.slack = t_rounding(o, d, corner, h.t);' \
+    'h.slack = kTMargin * corners * glm::length(e1) * glm::length(e2) / std::fabs(det);' \
+    rtbench ctest -R '^cli[.]rtbench$' --output-on-failure
+mutant arbiter-embree-errors-fail-the-run app/bench/bench_scene.cpp \
+    'verdict.embree_wrong = true;' 'verdict.ok = false;' \
+    rtbench ctest -R '^cli[.]rtbench$' --output-on-failure
+
 # The POV-Ray oracle (tests/oracle) alone, without the unit tests: an independent tracer
 # must notice a planted bug in refraction, shadows, the camera and transforms.
 oracle=(ctest -R '^oracle[.]' --output-on-failure)
