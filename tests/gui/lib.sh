@@ -63,12 +63,24 @@ after() {  # after PATTERN ACTION...: do ACTION, then wait for one more PATTERN 
 }
 
 wait_for_window() {  # wait_for_window NAME_REGEX: sets $wid
-    for _ in $(seq 300); do
+    # 60 s: beside the other tests a fresh viewer once showed none in 30 s (CI of da10252,
+    # the main suite; it passed under AddressSanitizer in the same run).
+    for _ in $(seq 600); do
         wid=$(xdotool search --name "$1" 2>/dev/null | head -n1)
         [ -n "$wid" ] && return 0
+        # An application that has exited will show no window: say so at once, with its log.
+        if [ -n "${app_pid:-}" ] && ! kill -0 "$app_pid" 2>/dev/null; then
+            echo "no window named '$1': the application exited; log:"
+            tail -20 "$work/app.log"
+            return 1
+        fi
         sleep 0.1
     done
-    echo "no window named '$1'"
+    # What a later reader needs to tell a slow start from a hung one.
+    echo "no window named '$1' after 60 s; the application is still running; windows:"
+    xdotool search --name . getwindowname %@ 2>/dev/null | head -10
+    echo "its log:"
+    tail -20 "$work/app.log"
     return 1
 }
 
