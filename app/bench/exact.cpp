@@ -33,14 +33,15 @@ struct DoubleHit {
 // two products of them, by up to u (8 R X + 5 X^2) (PBR 3.9.6's delta_e), which moves
 // t = sum(e_j t_j) / sum(e_j) by that times sum |t_j - t| / |sum e_j|; rounding t_j, the
 // products, the sum and the division move it by up to about 7 u of sum |e_j t_j| / |sum
-// e_j|. Taken as 8 u (R X + X^2) and 8 u: about the first-order worst case. A sliver long
-// across the ray has X its length over sum e_j its area: on a twisted tube's slivers 6
-// units long and 2e-4 wide, hits 1e-4 to 2e-4 units from a feeler's start, which Embree
-// met, had t <= 0 in our float test (1e-3 to 1e-2 units of bound there). Measured: a float t lies
-// at most 0.58 of this from the exact one on the bunny, teapot, terrain and a soup (0.05-0.16 on
-// slivers), 200,000 random rays each (docs/BENCHMARKS.md, forty-first session). Until then the
-// slack was 1e-5 of the corners' distance times |e1| |e2| / |det|, which depends on which corner is
-// a: on a sliver far above this with a at the apex, far below with a at a blunt corner (a false
+// e_j|. Taken as 8 u (R X + X^2) and 8 u: about the first-order worst case.
+// A sliver long across the ray has X its length over sum e_j its area: on a twisted
+// tube's slivers 6 units long and 2e-4 wide, hits 1e-4 to 2e-4 units from a feeler's
+// start, which Embree met and our float test put at t <= 0, lie within this bound.
+// Measured: a float t lies at most 0.58 of it from the exact one on the bunny, teapot,
+// terrain and a soup (0.05-0.16 on slivers), 200,000 random rays each
+// (docs/BENCHMARKS.md, forty-first session). Until then the slack was 1e-5 of the
+// corners' distance times |e1| |e2| / |det|, which depends on which corner is a: on a
+// sliver far above this with a at the apex, far below with a at a blunt corner (a false
 // "WRONG" on twist.obj).
 double t_rounding(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3 (&corner)[3],
                   double t) {
