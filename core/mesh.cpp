@@ -13,6 +13,7 @@
 
 #include "core/parallel.h"
 #include "core/shapes.h"
+#include "core/triangle_refs.h"
 
 namespace rt {
 namespace {
@@ -48,26 +49,19 @@ class LazySheared {
 void TriangleMesh::build(AccelKind kind, int threads) {
     threads = build_threads(threads);
     TaskPool* const pool = threads > 1 ? &TaskPool::shared(threads) : nullptr;
-    // The triangles' boxes in parts. (On one thread until the thirty-eighth session: two
-    // threads touching a fresh array's small pages at once were slower, eighth session;
-    // a large array's pages are huge ones now, or kept from the last build.)
-    LargeArray<Aabb> boxes(triangles.size());
-    const int box_parts = pool ? part_count(triangles.size(), threads, 16384) : 1;
-    std::vector<Aabb> part_bounds(static_cast<std::size_t>(box_parts));
-    parallel_parts(pool, 0, triangles.size(), box_parts,
-                   [&](int part, std::size_t begin, std::size_t end) {
-                       Aabb all;
-                       for (std::size_t i = begin; i < end; ++i) {
-                           Aabb box;
-                           for (int k = 0; k < 3; ++k) box.grow(positions[triangles[i][k]]);
-                           boxes[i] = box;
-                           all.grow(box);
-                       }
-                       part_bounds[part] = all;
-                   });
-    bounds_ = Aabb{};
-    for (const Aabb& b : part_bounds) bounds_.grow(b);
-    accel_.build(boxes, kind, kind == AccelKind::kBvh ? kWideLeaf : kTriangle4Lanes, threads,
+    // The triangles' boxes in parts, long thin ones cut in pieces (core/triangle_refs.h)
+    // for the wide BVH, the structure rays are traced with (a cut triangle is copied into
+    // the packs of each leaf its pieces reach). (On one thread until the
+    // thirty-eighth session: two threads touching a fresh array's small pages at once were
+    // slower, eighth session; a large array's pages are huge ones now, or kept from the
+    // last build.)
+    SplitLimits limits;
+    if (kind != AccelKind::kBvh) limits.max_pieces = 1;
+    const TriangleRefs refs =
+        triangle_refs(positions, triangles, limits, pool,
+                      pool ? part_count(triangles.size(), threads, 16384) : 1);
+    bounds_ = refs.bounds;
+    accel_.build(refs.boxes, kind, kind == AccelKind::kBvh ? kWideLeaf : kTriangle4Lanes, threads,
                  kTriangle4Lanes);
     // Each leaf's first pack (a pass over the leaves), then the packs filled in parallel.
     const auto order = accel_.order();
@@ -92,13 +86,13 @@ void TriangleMesh::build(AccelKind kind, int threads) {
             const Leaf leaf = leaves[l];
             const std::uint32_t start = leaf_pack_[leaf.first];
             for (std::uint32_t i = 0; i < leaf.count; ++i) {
-                const std::uint32_t prim = order[leaf.first + i];
+                const std::uint32_t ref = order[leaf.first + i], prim = refs.triangle(ref);
                 const glm::uvec3 idx = triangles[prim];
                 packs_[start + i / kTriangle4Lanes].set(static_cast<int>(i % kTriangle4Lanes),
                                                         positions[idx[0]], positions[idx[1]],
                                                         positions[idx[2]]);
                 pack_prims_[std::size_t{start} * kTriangle4Lanes + i] = prim;
-                prim_lane_[prim] = start * kTriangle4Lanes + i;
+                if (ref == prim) prim_lane_[prim] = start * kTriangle4Lanes + i;  // its first copy
             }
             for (std::uint32_t i = leaf.count; i % kTriangle4Lanes != 0; ++i) {
                 packs_[start + i / kTriangle4Lanes].set_empty(
@@ -107,7 +101,7 @@ void TriangleMesh::build(AccelKind kind, int threads) {
             }
         }
     };
-    prim_lane_.clear();  // every triangle is in one leaf: each entry written by fill
+    prim_lane_.clear();  // every triangle's first reference is in one leaf: written by fill
     prim_lane_.resize(triangles.size());
     parallel_parts(pool, 0, leaves.size(), pool ? part_count(leaves.size(), threads, 4096) : 1,
                    fill);

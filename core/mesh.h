@@ -73,7 +73,8 @@ struct TriangleMesh {
     // hands out the first pack itself (leaves_are_packs_), no lookup on the way.
     LargeArray<Triangle4> packs_;           // written in full by build(), in parallel
     LargeArray<std::uint32_t> pack_prims_;  // the triangle in lane l of pack p: [4 p + l]
-    LargeArray<std::uint32_t> prim_lane_;   // its inverse: triangle -> 4 p + l
+    LargeArray<std::uint32_t> prim_lane_;   // its inverse: triangle -> 4 p + l (a cut
+                                            // one's first copy, core/triangle_refs.h)
     LargeArray<std::uint32_t> leaf_pack_;   // read at leaves' first slots only
     bool leaves_are_packs_ = false;
 

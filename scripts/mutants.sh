@@ -977,6 +977,21 @@ mutant large-array-kept-block-of-any-size core/large_array.cpp \
     'blocks_[i].size >= size && blocks_[i].size <= 2 * size &&' 'blocks_[i].size >= size &&' \
     rt_tests $(unit 'LargeArray.*')
 
+# Long thin triangles cut in pieces (core/triangle_refs.h): the pieces cover their
+# triangle (the edges' crossings of the cuts, bounds rounded outwards), each names its
+# triangle, and thin large triangles are cut at all.
+mutant thin-pieces-without-edge-crossings core/triangle_refs.cpp \
+    'for (int i = 1; i < pieces; ++i) cut_edges(' 'for (int i = 1; i < 1; ++i) cut_edges(' \
+    rt_tests $(unit 'TriangleRefs.*')
+mutant thin-pieces-rounded-to-nearest core/triangle_refs.cpp \
+    'return f - (std::abs(f) * 0x1p-21f + std::numeric_limits<float>::min());' 'return f;' \
+    rt_tests $(unit 'TriangleRefs.*')
+mutant thin-pieces-name-one-triangle core/triangle_refs.h \
+    'return ref < n ? ref : extra_triangles[ref - n];' 'return ref < n ? ref : extra_triangles[0];' \
+    rt_tests $(unit 'TriangleRefs.*')
+mutant thin-triangles-never-cut core/triangle_refs.cpp \
+    'if (!(largest > large)) return refs;' 'return refs;' rt_tests $(unit 'TriangleRefs.*')
+
 echo "$caught caught, $missed missed, $broken could not be planted"
 [ "$missed" -gt 0 ] && echo "missed: ${missed_names[*]}"
 [ "$missed" -eq 0 ] && [ "$broken" -eq 0 ]
