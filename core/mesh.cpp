@@ -81,18 +81,24 @@ void TriangleMesh::build(AccelKind kind, int threads) {
     packs_.resize(pack_total);
     pack_prims_.clear();
     pack_prims_.resize(std::size_t{pack_total} * kTriangle4Lanes);
-    const auto fill = [&](int, std::size_t begin, std::size_t end) {
+    // (Two loops: where no triangle is cut, slot s holds triangle order()[s] and no
+    // lookup is made, which took the loop 0.5 ms longer on a 122,402-triangle mesh.)
+    const std::size_t n = triangles.size();  // references past these are extra pieces
+    const std::uint32_t* const extra = refs.extra_triangles.data();
+    const auto fill = [&]<bool kCut>(std::size_t begin, std::size_t end) {
         for (std::size_t l = begin; l < end; ++l) {
             const Leaf leaf = leaves[l];
             const std::uint32_t start = leaf_pack_[leaf.first];
             for (std::uint32_t i = 0; i < leaf.count; ++i) {
-                const std::uint32_t ref = order[leaf.first + i], prim = refs.triangle(ref);
+                const std::uint32_t ref = order[leaf.first + i];
+                const std::uint32_t prim = !kCut || ref < n ? ref : extra[ref - n];
                 const glm::uvec3 idx = triangles[prim];
                 packs_[start + i / kTriangle4Lanes].set(static_cast<int>(i % kTriangle4Lanes),
                                                         positions[idx[0]], positions[idx[1]],
                                                         positions[idx[2]]);
                 pack_prims_[std::size_t{start} * kTriangle4Lanes + i] = prim;
-                if (ref == prim) prim_lane_[prim] = start * kTriangle4Lanes + i;  // its first copy
+                if (!kCut || ref == prim)  // its first copy
+                    prim_lane_[prim] = start * kTriangle4Lanes + i;
             }
             for (std::uint32_t i = leaf.count; i % kTriangle4Lanes != 0; ++i) {
                 packs_[start + i / kTriangle4Lanes].set_empty(
@@ -104,7 +110,12 @@ void TriangleMesh::build(AccelKind kind, int threads) {
     prim_lane_.clear();  // every triangle's first reference is in one leaf: written by fill
     prim_lane_.resize(triangles.size());
     parallel_parts(pool, 0, leaves.size(), pool ? part_count(leaves.size(), threads, 4096) : 1,
-                   fill);
+                   [&](int, std::size_t begin, std::size_t end) {
+                       if (refs.extra_triangles.empty())
+                           fill.template operator()<false>(begin, end);
+                       else
+                           fill.template operator()<true>(begin, end);
+                   });
     leaves_are_packs_ = accel_.relabel_leaves(
         [&](std::uint32_t first, std::uint32_t) { return leaf_pack_[first]; });
 }

@@ -105,29 +105,29 @@ TriangleRefs triangle_refs(std::span<const vec3> positions, std::span<const glm:
                            const SplitLimits& limits, TaskPool* pool, int parts) {
     TriangleRefs refs;
     const std::size_t n = triangles.size();
-    // Room for a piece more a triangle, so that the pieces' boxes need no copy (the
-    // array's memory is mapped as it is touched, core/large_array.h).
-    refs.boxes.reserve(limits.max_pieces > 1 ? 2 * n : n);
     refs.boxes.resize(n);
     const auto each = [](int part) { return static_cast<std::size_t>(part); };
     std::vector<Aabb> part_bounds(each(parts));
     std::vector<double> part_area(each(parts)), part_largest(each(parts));
-    // The boxes, the triangles' area and the largest box's.
+    // The boxes, the largest box's area, and the triangles' mean area, from every fourth
+    // (all of them took the pass twice the time of the boxes alone).
+    constexpr std::size_t kSampled = 4;
     parallel_parts(pool, 0, n, parts, [&](int part, std::size_t begin, std::size_t end) {
         Aabb all;
-        double area = 0.0;
         float largest = 0.0f;
         for (std::size_t t = begin; t < end; ++t) {
             const glm::uvec3 tri = triangles[t];
-            const vec3 &a = positions[tri[0]], &b = positions[tri[1]], &c = positions[tri[2]];
             Aabb box;
-            box.grow(a);
-            box.grow(b);
-            box.grow(c);
+            for (int k = 0; k < 3; ++k) box.grow(positions[tri[k]]);
             refs.boxes[t] = box;
             all.grow(box);
-            area += double{glm::length(glm::cross(b - a, c - a))};
             largest = std::max(largest, box.half_area());
+        }
+        double area = 0.0;
+        for (std::size_t t = begin; t < end; t += kSampled) {
+            const glm::uvec3 tri = triangles[t];
+            const vec3 &a = positions[tri[0]], &b = positions[tri[1]], &c = positions[tri[2]];
+            area += double{glm::length(glm::cross(b - a, c - a))};
         }
         part_bounds[each(part)] = all;
         part_area[each(part)] = area;
@@ -143,7 +143,13 @@ TriangleRefs triangle_refs(std::span<const vec3> positions, std::span<const glm:
     // others after every triangle, each part's in turn. (The cuts are made twice, which
     // costs less than arrays of unknown size: a fresh page costs a fault, 6-16 us on some
     // machines, docs/BENCHMARKS.md.)
-    const double large = limits.size_ratio * area / static_cast<double>(n);
+    std::size_t sampled = 0;  // as the parts' loops count them
+    for (int part = 0; part < parts; ++part) {
+        const std::size_t begin = n * each(part) / each(parts),
+                          end = n * each(part + 1) / each(parts);
+        sampled += (end - begin + kSampled - 1) / kSampled;
+    }
+    const double large = limits.size_ratio * area / static_cast<double>(sampled);
     if (!(largest > large)) return refs;  // most meshes: none that large
     LargeArray<std::uint8_t> pieces(n);
     std::vector<std::size_t> first_extra(each(parts) + 1, 0);
