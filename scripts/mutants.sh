@@ -989,6 +989,9 @@ mutant thin-pieces-rounded-to-nearest core/triangle_refs.cpp \
 mutant thin-pieces-name-one-triangle core/triangle_refs.h \
     'return ref < n ? ref : extra_triangles[ref - n];' 'return ref < n ? ref : extra_triangles[0];' \
     rt_tests $(unit 'TriangleRefs.*')
+mutant thin-pieces-packed-as-one-triangle core/mesh.cpp \
+    'ref < n ? ref : extra[ref - n];' 'ref < n ? ref : extra[0];' \
+    rt_tests $(unit 'TriangleRefs.*')
 mutant thin-triangles-never-cut core/triangle_refs.cpp \
     'if (!(largest > large)) return refs;' 'return refs;' rt_tests $(unit 'TriangleRefs.*')
 
